@@ -1,0 +1,179 @@
+#include "meshing/patch_mesh.h"
+
+#include <OpenMesh/Core/System/omstream.hh>
+#include <Eigen/Geometry>
+#include <stdexcept>
+
+#include "meshing/polygon_triangulation.h"
+
+namespace rad {
+namespace {
+Eigen::Vector3d toEigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
+OpenMesh::Vec3d toOm(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
+}  // namespace
+
+PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
+                     const std::vector<PatchPolygon>& polygons) {
+  // OpenMesh reports rejected (non-manifold) faces on its error stream; we handle them ourselves.
+  omerr().disable();
+  mesh_.add_property(patchId_, "patch");
+  mesh_.add_property(materialId_, "material");
+  mesh_.add_property(level_, "level");
+  mesh_.add_property(area_, "area");
+
+  std::vector<TriMesh::VertexHandle> handles(positions.size());
+  for (size_t i = 0; i < positions.size(); ++i) handles[i] = mesh_.add_vertex(toOm(positions[i]));
+
+  boundsMin_ = Eigen::Vector3d::Constant(0);
+  boundsMax_ = Eigen::Vector3d::Constant(0);
+  bool first = true;
+  for (const PatchPolygon& polygon : polygons) {
+    std::vector<Eigen::Vector3d> points;
+    for (int v : polygon.vertices) {
+      if (v < 0 || v >= static_cast<int>(positions.size()))
+        throw std::out_of_range("PatchMesh: vertex index out of range");
+      points.push_back(positions[v]);
+      if (first) { boundsMin_ = boundsMax_ = positions[v]; first = false; }
+      boundsMin_ = boundsMin_.cwiseMin(positions[v]);
+      boundsMax_ = boundsMax_.cwiseMax(positions[v]);
+    }
+    const int patch = patchCount_++;
+    for (const auto& t : triangulatePolygon(points))
+      addTriangle(handles[polygon.vertices[t[0]]], handles[polygon.vertices[t[1]]],
+                  handles[polygon.vertices[t[2]]], patch, polygon.material);
+  }
+  inputTriangles_ = elementCount();
+}
+
+void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
+                            TriMesh::VertexHandle c, int patch, int material) {
+  TriMesh::FaceHandle f = mesh_.add_face(a, b, c);
+  if (!f.is_valid()) {
+    // Non-manifold or inconsistently wound contact with a neighbour: give this triangle its own
+    // vertices. It stays conforming within itself; the seam is a real crease in the input.
+    f = mesh_.add_face(mesh_.add_vertex(mesh_.point(a)), mesh_.add_vertex(mesh_.point(b)),
+                       mesh_.add_vertex(mesh_.point(c)));
+    if (!f.is_valid()) throw std::runtime_error("PatchMesh: OpenMesh rejected a triangle");
+  }
+  mesh_.property(patchId_, f) = patch;
+  mesh_.property(materialId_, f) = material;
+  mesh_.property(level_, f) = 0;
+  updateArea(f);
+}
+
+void PatchMesh::updateArea(TriMesh::FaceHandle f) {
+  const auto c = corners(f.idx());
+  mesh_.property(area_, f) = 0.5 * (c[1] - c[0]).cross(c[2] - c[0]).norm();
+}
+
+std::array<int, 3> PatchMesh::cornerVertices(int element) const {
+  std::array<int, 3> v{};
+  int k = 0;
+  for (auto vh : mesh_.fv_range(face(element))) v[k++] = vh.idx();
+  return v;
+}
+
+std::array<Eigen::Vector3d, 3> PatchMesh::corners(int element) const {
+  std::array<Eigen::Vector3d, 3> c;
+  int k = 0;
+  for (auto vh : mesh_.fv_range(face(element))) c[k++] = toEigen(mesh_.point(vh));
+  return c;
+}
+
+Eigen::Vector3d PatchMesh::position(int vertex) const {
+  return toEigen(mesh_.point(TriMesh::VertexHandle(vertex)));
+}
+
+Eigen::Vector3d PatchMesh::normal(int element) const {
+  const auto c = corners(element);
+  return (c[1] - c[0]).cross(c[2] - c[0]).normalized();
+}
+
+Eigen::Vector3d PatchMesh::centroid(int element) const {
+  const auto c = corners(element);
+  return (c[0] + c[1] + c[2]) / 3.0;
+}
+
+double PatchMesh::totalArea() const {
+  double sum = 0;
+  for (int e = 0; e < elementCount(); ++e) sum += area(e);
+  return sum;
+}
+
+double PatchMesh::patchArea(int patch) const {
+  double sum = 0;
+  for (int e = 0; e < elementCount(); ++e)
+    if (this->patch(e) == patch) sum += area(e);
+  return sum;
+}
+
+TriMesh::EdgeHandle PatchMesh::longestEdge(TriMesh::FaceHandle f) const {
+  TriMesh::EdgeHandle best;
+  double bestLength = -1;
+  for (auto eh : mesh_.fe_range(f)) {
+    const double length = mesh_.calc_edge_sqr_length(eh);
+    // Ties broken by index so that the choice is deterministic.
+    if (length > bestLength || (length == bestLength && eh.idx() < best.idx())) {
+      best = eh;
+      bestLength = length;
+    }
+  }
+  return best;
+}
+
+void PatchMesh::splitEdge(TriMesh::EdgeHandle e) {
+  const auto h = mesh_.halfedge_handle(e, 0);
+  const auto mid =
+      mesh_.add_vertex((mesh_.point(mesh_.from_vertex_handle(h)) + mesh_.point(mesh_.to_vertex_handle(h))) * 0.5);
+  // split_copy gives each new face the properties (patch, material, level) of the face it was
+  // cut from, so every face around the new vertex is a child one level below its parent.
+  mesh_.split_copy(e, mid);
+  for (auto f : mesh_.vf_range(mid)) {
+    mesh_.property(level_, f) += 1;
+    updateArea(f);
+  }
+}
+
+void PatchMesh::refineAcross(TriMesh::FaceHandle f, int depth) {
+  // Rivara's longest-edge propagation path: before splitting f's longest edge, make sure that
+  // edge is also the longest of the face across it, refining that face first if not.
+  for (int guard = 0; guard < 64; ++guard) {
+    const TriMesh::EdgeHandle e = longestEdge(f);
+    const double length = mesh_.calc_edge_sqr_length(e);
+    const auto h = mesh_.halfedge_handle(e, 0);
+    TriMesh::FaceHandle other = mesh_.face_handle(h);
+    if (other == f) other = mesh_.opposite_face_handle(h);
+    if (other.is_valid() && depth < 256) {
+      const double otherLongest = mesh_.calc_edge_sqr_length(longestEdge(other));
+      if (otherLongest > length * (1 + 1e-12)) {
+        refineAcross(other, depth + 1);
+        continue;  // the face across e changed; look again
+      }
+    }
+    splitEdge(e);
+    return;
+  }
+  splitEdge(longestEdge(f));
+}
+
+int PatchMesh::bisect(int element) {
+  const int before = elementCount();
+  refineAcross(face(element), 0);
+  return elementCount() - before;
+}
+
+void PatchMesh::subdivideUniform(double maxArea) {
+  if (!(maxArea > 0)) throw std::invalid_argument("subdivideUniform: maxArea must be positive");
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    for (int e = 0; e < elementCount(); ++e) {
+      while (area(e) > maxArea) {
+        bisect(e);
+        changed = true;
+      }
+    }
+  }
+}
+
+}  // namespace rad

@@ -1,0 +1,80 @@
+#pragma once
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+namespace rad {
+
+// Double precision everywhere in the mesh (DESIGN: float only at the Embree and VTK boundaries).
+struct PatchMeshTraits : public OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<PatchMeshTraits>;
+
+// One input polygon: the unit of material and of the scene's description.
+struct PatchPolygon {
+  std::vector<int> vertices;  // indices into the positions array, counter-clockwise from the front
+  int material = 0;
+};
+
+// The meshed scene: patches (input polygons) split into triangular elements, kept conforming
+// (no T-vertices) so values interpolate across shared edges without cracks. Elements are the
+// mesh's faces, numbered 0..elementCount()-1; that index is used by every later stage.
+class PatchMesh {
+ public:
+  PatchMesh(const std::vector<Eigen::Vector3d>& positions, const std::vector<PatchPolygon>& polygons);
+
+  int elementCount() const { return static_cast<int>(mesh_.n_faces()); }
+  int patchCount() const { return patchCount_; }
+  // Triangles the input polygons were split into, before any subdivision.
+  int inputTriangleCount() const { return inputTriangles_; }
+  int vertexCount() const { return static_cast<int>(mesh_.n_vertices()); }
+
+  int patch(int element) const { return mesh_.property(patchId_, face(element)); }
+  int material(int element) const { return mesh_.property(materialId_, face(element)); }
+  double area(int element) const { return mesh_.property(area_, face(element)); }
+  // Unit geometric normal of the element's front side (right-hand rule on its corners).
+  Eigen::Vector3d normal(int element) const;
+  Eigen::Vector3d centroid(int element) const;
+  std::array<int, 3> cornerVertices(int element) const;
+  std::array<Eigen::Vector3d, 3> corners(int element) const;
+  Eigen::Vector3d position(int vertex) const;
+  // How many times the element's ancestry was bisected (0 for the patch's own triangles).
+  int level(int element) const { return mesh_.property(level_, face(element)); }
+
+  double totalArea() const;
+  double patchArea(int patch) const;
+  Eigen::Vector3d boundsMin() const { return boundsMin_; }
+  Eigen::Vector3d boundsMax() const { return boundsMax_; }
+  double boundsDiagonal() const { return (boundsMax_ - boundsMin_).norm(); }
+
+  // Splits elements by longest-edge bisection until none is larger than maxArea. Conforming:
+  // a split edge splits both faces beside it (Rivara's LEPP keeps the triangles well shaped).
+  void subdivideUniform(double maxArea);
+  // Bisects one element (and neighbours as needed to stay conforming). Returns the number of
+  // elements added.
+  int bisect(int element);
+
+  const TriMesh& mesh() const { return mesh_; }
+  static TriMesh::FaceHandle face(int element) { return TriMesh::FaceHandle(element); }
+
+ private:
+  void addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b, TriMesh::VertexHandle c,
+                   int patch, int material);
+  TriMesh::EdgeHandle longestEdge(TriMesh::FaceHandle f) const;
+  void refineAcross(TriMesh::FaceHandle f, int depth);
+  void splitEdge(TriMesh::EdgeHandle e);
+  void updateArea(TriMesh::FaceHandle f);
+
+  TriMesh mesh_;
+  OpenMesh::FPropHandleT<int> patchId_, materialId_, level_;
+  OpenMesh::FPropHandleT<double> area_;
+  int patchCount_ = 0;
+  int inputTriangles_ = 0;
+  Eigen::Vector3d boundsMin_, boundsMax_;
+};
+
+}  // namespace rad

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "meshing/patch_mesh.h"
+
+namespace rad {
+
+// Per-vertex values for baked vertex colours. A mesh vertex is split into several output
+// vertices where the elements around it differ in material or bend by more than the crease
+// angle, so a room's corners and the border between two materials stay sharp instead of
+// bleeding into each other. Each output vertex holds the area-weighted mean of its elements.
+class VertexInterpolation {
+ public:
+  explicit VertexInterpolation(const PatchMesh& mesh, double creaseAngleDegrees = 30.0);
+
+  int vertexCount() const { return static_cast<int>(positions_.size()); }
+  const Eigen::Vector3d& position(int vertex) const { return positions_[vertex]; }
+  const Eigen::Vector3d& normal(int vertex) const { return normals_[vertex]; }
+  // Output-vertex indices of an element's corners, in the element's winding.
+  const std::array<int, 3>& triangle(int element) const { return triangles_[element]; }
+
+  std::vector<Eigen::Vector3d> interpolate(const std::vector<Eigen::Vector3d>& perElement) const;
+
+ private:
+  std::vector<Eigen::Vector3d> positions_, normals_;
+  std::vector<std::array<int, 3>> triangles_;
+  // For output vertex v, its elements are elements_[offsets_[v] .. offsets_[v+1]).
+  std::vector<int> offsets_, elements_;
+  std::vector<double> weights_;
+};
+
+}  // namespace rad

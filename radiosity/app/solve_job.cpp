@@ -1,0 +1,209 @@
+#include "radiosity/app/solve_job.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
+#include "radiosity/core/progress.h"
+#include "radiosity/formfactors/form_factor_cache.h"
+#include "radiosity/formfactors/hemisphere_form_factors.h"
+#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_mesh.h"
+#include "radiosity/solvers/gathering_solvers.h"
+#include "radiosity/solvers/progressive_solver.h"
+#include "radiosity/visibility/ray_caster.h"
+
+namespace rad {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string formatNumber(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
+
+void note(SolveResult& result, std::string what, std::string why) {
+  logInfo("skipped: " + what + " (" + why + ")");
+  result.skipped.push_back({std::move(what), std::move(why)});
+}
+
+int defaultMaxIterations(SolverKind kind, int elements) {
+  switch (kind) {
+    case SolverKind::Progressive:
+    case SolverKind::Southwell: return std::max(100000, 200 * elements);
+    case SolverKind::GaussSeidel: return 10000;
+    case SolverKind::Jacobi: return 10000;
+  }
+  return 10000;
+}
+
+}  // namespace
+
+SolverKind parseSolverKind(const std::string& name) {
+  if (name == "progressive") return SolverKind::Progressive;
+  if (name == "southwell") return SolverKind::Southwell;
+  if (name == "gauss-seidel") return SolverKind::GaussSeidel;
+  if (name == "jacobi") return SolverKind::Jacobi;
+  throw InputError("unknown solver '" + name + "' (expected progressive, southwell, gauss-seidel or jacobi)");
+}
+
+std::string solverKindName(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::Progressive: return "progressive";
+    case SolverKind::Southwell: return "southwell";
+    case SolverKind::GaussSeidel: return "gauss-seidel";
+    case SolverKind::Jacobi: return "jacobi";
+  }
+  return "?";
+}
+
+RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
+  RadiosityProblem problem;
+  const int n = mesh.elementCount();
+  problem.emission.resize(n);
+  problem.reflectance.resize(n);
+  problem.area.resize(n);
+  for (int e = 0; e < n; ++e) {
+    const Material& m = scene.materials[mesh.material(e)];
+    problem.emission[e] = M_PI * m.emission;  // Lambertian emitter: exitance = pi × radiance
+    problem.reflectance[e] = m.diffuse;
+    problem.area[e] = mesh.area(e);
+  }
+  return problem;
+}
+
+SolveResult runSolve(const SolveOptions& options) {
+  const auto start = Clock::now();
+  Scene scene = loadObjScene(options.scenePath);
+  const double loadSeconds = since(start);
+  SolveResult result = solveScene(std::move(scene), options);
+  result.times.load = loadSeconds;
+  result.times.total += loadSeconds;
+  return result;
+}
+
+SolveResult solveScene(Scene scene, const SolveOptions& options) {
+  if (options.raysPerElement < 1) throw InputError("--rays must be at least 1");
+  if (options.maxArea < 0 || !std::isfinite(options.maxArea))
+    throw InputError("--max-area must be a positive number");
+  if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
+    throw InputError("--tolerance must be a non-negative number");
+  if (options.maxIterations < 0) throw InputError("--max-iterations must be non-negative");
+  if (options.threads < 0) throw InputError("--threads must be non-negative");
+  if (options.bounces >= 0 && options.solver != SolverKind::Jacobi)
+    throw InputError("--bounces applies to --solver jacobi only");
+
+  const auto start = Clock::now();
+  SolveResult result;
+  result.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
+                                  static_cast<size_t>(result.threads));
+
+  result.scene = std::move(scene);
+  requireEmitter(result.scene);
+  if (!result.scene.hasSpecular())
+    note(result, "specular continuation", "the scene has no mirror or glass material");
+  else
+    logWarning("mirror/glass materials are treated as diffuse (Kd) by the radiosity pass: "
+               "extended form factors are not implemented yet");
+
+  auto t = Clock::now();
+  result.mesh = std::make_unique<PatchMesh>(buildPatchMesh(result.scene));
+  const double totalArea = result.mesh->totalArea();
+  result.maxArea = options.maxArea > 0 ? options.maxArea : totalArea / options.targetElements;
+  result.mesh->subdivideUniform(result.maxArea);
+  const PatchMesh& mesh = *result.mesh;
+  result.times.mesh = since(t);
+  logInfo("mesh: " + std::to_string(mesh.patchCount()) + " patches, " +
+          std::to_string(mesh.elementCount()) + " elements (max area " +
+          formatNumber(result.maxArea) + ")");
+
+  t = Clock::now();
+  RayCaster rays(mesh);
+  result.times.bvh = since(t);
+
+  result.problem = makeProblem(result.scene, mesh);
+  const RadiosityProblem& problem = result.problem;
+  HemisphereFormFactors method(mesh, rays, {options.raysPerElement, options.seed});
+  FormFactorCache cache(method);
+
+  int blackElements = 0;
+  for (const Rgb& rho : problem.reflectance) blackElements += rho.maxComponent() == 0;
+  if (blackElements > 0)
+    note(result, "re-shooting from " + std::to_string(blackElements) + " black elements",
+         "reflectance 0: they receive light but pass none on");
+
+  t = Clock::now();
+  std::unique_ptr<Solver> solver;
+  double tolerance = options.tolerance;
+  int maxIterations = options.maxIterations > 0 ? options.maxIterations
+                                                : defaultMaxIterations(options.solver, mesh.elementCount());
+  if (options.solver == SolverKind::Progressive) {
+    solver = std::make_unique<ProgressiveSolver>(problem, cache);
+  } else {
+    Progress progress("form factors", uint64_t(mesh.elementCount()) * options.raysPerElement, "rays");
+    SparseRows f = gatherMatrix(problem, cache, &progress);
+    progress.finish(std::to_string(cache.rowsComputed()) + " rows");
+    if (options.solver == SolverKind::Southwell) {
+      solver = std::make_unique<ProgressiveSolver>(problem, f);
+    } else if (options.solver == SolverKind::Jacobi) {
+      solver = std::make_unique<JacobiSolver>(problem, std::move(f));
+      if (options.bounces >= 0) {
+        maxIterations = options.bounces;
+        tolerance = 0;  // exactly that many bounces
+      }
+    } else {
+      solver = std::make_unique<GaussSeidelSolver>(problem, std::move(f));
+    }
+  }
+
+  Progress progress("solve (" + solver->name() + ")", 0, "iterations");
+  const double startMeasure = std::max(solver->progress(), 1e-300);
+  while (solver->iterations() < maxIterations && solver->progress() > tolerance) {
+    solver->step();
+    progress.advance();
+    if (tolerance > 0 && solver->progress() > 0) {
+      // Fraction of the way, on a log scale, from the starting measure to the tolerance.
+      const double f = std::log(startMeasure / solver->progress()) / std::log(startMeasure / tolerance);
+      progress.setFraction(std::clamp(f, 0.0, 1.0), solver->progressMeasure() + " " +
+                                                        formatNumber(solver->progress()));
+    }
+  }
+  result.converged = options.bounces >= 0 ? solver->iterations() == options.bounces
+                                          : solver->progress() <= tolerance;
+  progress.finish(solver->progressMeasure() + " " + formatNumber(solver->progress()) +
+                  (result.converged ? "" : " (not converged)"));
+  const double solveAndRows = since(t);
+  result.times.formFactors = cache.seconds();
+  result.times.solve = std::max(0.0, solveAndRows - cache.seconds());
+
+  result.radiosity = solver->solution();
+  result.solverName = solver->name();
+  result.progressMeasure = solver->progressMeasure();
+  result.iterations = solver->iterations();
+  result.finalProgress = solver->progress();
+  result.rowsComputed = cache.rowsComputed();
+  result.raysCast = cache.raysCast();
+  if (result.rowsComputed < mesh.elementCount())
+    note(result, "form-factor rows of " + std::to_string(mesh.elementCount() - result.rowsComputed) +
+                     " elements",
+         options.solver == SolverKind::Progressive ? "they never held unshot power worth shooting"
+                                                   : "black elements pass no light on");
+  if (!result.converged && options.bounces < 0)
+    logWarning("stopped after " + std::to_string(result.iterations) + " iterations with " +
+               solver->progressMeasure() + " " + formatNumber(result.finalProgress) +
+               " above the tolerance " + formatNumber(tolerance));
+  result.times.total = since(start);
+  return result;
+}
+
+}  // namespace rad

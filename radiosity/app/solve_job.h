@@ -1,0 +1,72 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "meshing/patch_mesh.h"
+#include "radiosity/core/rgb.h"
+#include "radiosity/scene/scene.h"
+#include "radiosity/solvers/radiosity_problem.h"
+
+namespace rad {
+
+enum class SolverKind { Progressive, Southwell, GaussSeidel, Jacobi };
+SolverKind parseSolverKind(const std::string& name);  // throws InputError for unknown names
+std::string solverKindName(SolverKind kind);
+
+struct SolveOptions {
+  std::string scenePath;
+  std::string outputDir;
+  SolverKind solver = SolverKind::Progressive;
+  int raysPerElement = 1024;
+  double maxArea = 0;          // scene units²; 0: totalArea / targetElements
+  int targetElements = 1500;   // used when maxArea is 0
+  uint64_t seed = 1;
+  int threads = 0;             // 0: all hardware threads
+  double tolerance = 1e-4;
+  int maxIterations = 0;       // 0: a default per solver
+  int bounces = -1;            // Jacobi only: exactly this many bounces (overrides tolerance)
+};
+
+// Something the run decided not to do, and why (reported in the log and summary.json).
+struct SkipNote {
+  std::string what, why;
+};
+
+struct StageTimes {
+  double load = 0, mesh = 0, bvh = 0, formFactors = 0, solve = 0, output = 0, total = 0;
+};
+
+// Everything a solve produced, for the writers and for tests.
+struct SolveResult {
+  Scene scene;
+  std::unique_ptr<PatchMesh> mesh;
+  RadiosityProblem problem;
+  std::vector<Rgb> radiosity;  // B per element, W/m² (for scenes in metres)
+  std::string solverName, progressMeasure;
+  int iterations = 0;
+  double finalProgress = 0;    // residual or unshot fraction reached
+  bool converged = false;
+  double maxArea = 0;
+  int rowsComputed = 0;
+  uint64_t raysCast = 0;
+  int threads = 0;
+  StageTimes times;
+  std::vector<SkipNote> skipped;
+};
+
+// Loads options.scenePath, then solveScene(). Throws InputError for bad input.
+SolveResult runSolve(const SolveOptions& options);
+// Meshes, computes form factors and solves an already loaded scene (options.scenePath unused).
+SolveResult solveScene(Scene scene, const SolveOptions& options);
+
+// The per-element problem of a meshed scene: E = pi·Ke on emitters, rho = Kd.
+RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh);
+
+// Writes elements.csv, vertex_colors.ply and summary.json into options.outputDir. Every file is
+// written under a temporary name and renamed only once all of them are complete.
+void writeSolveOutputs(const SolveOptions& options, SolveResult& result);
+
+}  // namespace rad

@@ -1,0 +1,106 @@
+// Writing a finished solve: elements.csv, vertex_colors.ply and summary.json.
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <filesystem>
+
+#include "meshing/vertex_interpolation.h"
+#include "radiosity/app/solve_job.h"
+#include "radiosity/core/atomic_file.h"
+#include "radiosity/core/log.h"
+#include "radiosity/output/elements_csv.h"
+#include "radiosity/output/tone_map.h"
+#include "radiosity/output/vertex_colors_ply.h"
+
+namespace rad {
+namespace {
+
+nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& r, double exposure) {
+  using nlohmann::json;
+  const PatchMesh& mesh = *r.mesh;
+  int emitterElements = 0;
+  for (const Rgb& e : r.problem.emission) emitterElements += e.maxComponent() > 0;
+  json skipped = json::array();
+  for (const SkipNote& s : r.skipped) skipped.push_back({{"what", s.what}, {"why", s.why}});
+  json materials = json::array();
+  for (const Material& m : r.scene.materials) materials.push_back(m.name);
+
+  const double rayTime = r.times.formFactors;
+  return {
+      {"scene",
+       {{"file", options.scenePath},
+        {"polygons", r.scene.polygons.size()},
+        {"triangles", mesh.inputTriangleCount()},
+        {"patches", mesh.patchCount()},
+        {"elements", mesh.elementCount()},
+        {"vertices", mesh.vertexCount()},
+        {"emitters", r.scene.emitterCount()},
+        {"emitter_elements", emitterElements},
+        {"materials", materials},
+        {"skipped_degenerate_faces", r.scene.skippedDegenerateFaces},
+        {"total_area", mesh.totalArea()},
+        {"max_element_area", r.maxArea}}},
+      {"form_factors",
+       {{"method", "hemisphere"},
+        {"rays_per_element", options.raysPerElement},
+        {"rows_computed", r.rowsComputed},
+        {"rays_cast", r.raysCast},
+        {"rays_per_second", rayTime > 0 ? r.raysCast / rayTime : 0.0},
+        {"seed", options.seed}}},
+      {"solver",
+       {{"name", r.solverName},
+        {"iterations", r.iterations},
+        {"measure", r.progressMeasure},
+        {"final", r.finalProgress},
+        {"tolerance", options.tolerance},
+        {"converged", r.converged},
+        {"emitted_power", r.problem.emittedPower()}}},
+      {"threads", r.threads},
+      {"time_seconds",
+       {{"load", r.times.load},
+        {"mesh", r.times.mesh},
+        {"bvh", r.times.bvh},
+        {"form_factors", r.times.formFactors},
+        {"solve", r.times.solve},
+        {"output", r.times.output},
+        {"total", r.times.total}}},
+      {"units",
+       {{"B", "radiosity, W/m^2 (scene units in metres)"},
+        {"L", "outgoing radiance B/pi, W/(m^2 sr)"}}},
+      {"tone_map", {{"exposure", exposure}, {"operator", "clamp(exposure*L) then sRGB OETF"}}},
+      {"skipped", skipped},
+  };
+}
+
+}  // namespace
+
+void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
+  const auto start = std::chrono::steady_clock::now();
+  ensureDirectory(options.outputDir);
+  const std::filesystem::path dir(options.outputDir);
+  const PatchMesh& mesh = *result.mesh;
+
+  AtomicFile csv((dir / "elements.csv").string());
+  writeElementsCsv(csv.stream(), mesh, result.radiosity);
+
+  const VertexInterpolation interpolation(mesh);
+  const std::vector<Rgb> vertexRadiance = interpolateVertexRadiance(interpolation, result.radiosity);
+  std::vector<Rgb> elementRadiance(result.radiosity.size());
+  for (size_t e = 0; e < elementRadiance.size(); ++e) elementRadiance[e] = result.radiosity[e] / M_PI;
+  const ToneMap toneMap = ToneMap::autoExposure(elementRadiance, result.problem.area);
+  AtomicFile ply((dir / "vertex_colors.ply").string(), /*binary=*/true);
+  writeVertexColorsPly(ply.stream(), interpolation, mesh, vertexRadiance, toneMap);
+
+  result.times.output = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.times.total += result.times.output;
+  AtomicFile summary((dir / "summary.json").string());
+  summary.stream() << summaryJson(options, result, toneMap.exposure).dump(2) << "\n";
+
+  // Only now that every file is complete do they take their final names.
+  csv.commit();
+  ply.commit();
+  summary.commit();
+  logInfo("wrote elements.csv, vertex_colors.ply, summary.json to " + options.outputDir);
+}
+
+}  // namespace rad

@@ -1,0 +1,46 @@
+#include "radiosity/core/atomic_file.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+#include "radiosity/core/errors.h"
+
+namespace rad {
+
+AtomicFile::AtomicFile(std::string path, bool binary)
+    : path_(std::move(path)),
+      tempPath_(path_ + ".tmp" + std::to_string(static_cast<long>(getpid()))) {
+  out_.open(tempPath_, binary ? std::ios::out | std::ios::binary | std::ios::trunc
+                              : std::ios::out | std::ios::trunc);
+  if (!out_) throw RuntimeFailure("cannot write " + path_);
+}
+
+AtomicFile::~AtomicFile() {
+  if (!committed_) {
+    out_.close();
+    std::remove(tempPath_.c_str());
+  }
+}
+
+void AtomicFile::commit() {
+  out_.flush();
+  const bool ok = static_cast<bool>(out_);
+  out_.close();
+  if (!ok || out_.fail()) throw RuntimeFailure("error while writing " + path_);
+  std::error_code ec;
+  std::filesystem::rename(tempPath_, path_, ec);
+  if (ec) throw RuntimeFailure("cannot rename " + tempPath_ + " to " + path_ + ": " + ec.message());
+  committed_ = true;
+}
+
+void ensureDirectory(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError(dir, 0, "cannot create output directory" + (ec ? ": " + ec.message() : ""));
+}
+
+}  // namespace rad

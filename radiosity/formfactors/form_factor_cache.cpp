@@ -1,0 +1,58 @@
+#include "radiosity/formfactors/form_factor_cache.h"
+
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+
+#include "radiosity/core/progress.h"
+
+namespace rad {
+namespace {
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+FormFactorCache::FormFactorCache(const HemisphereFormFactors& method)
+    : method_(method), rows_(method.mesh().elementCount()) {}
+
+const FormFactorRow& FormFactorCache::row(int element) {
+  if (!rows_[element]) {
+    const auto start = std::chrono::steady_clock::now();
+    rows_[element] = std::make_unique<FormFactorRow>(method_.computeRow(element));
+    ++rowsComputed_;
+    raysCast_ += method_.raysPerRow();
+    seconds_ += secondsSince(start);
+  }
+  return *rows_[element];
+}
+
+void FormFactorCache::computeRows(const std::vector<bool>& needed, Progress* progress) {
+  std::vector<int> todo;
+  for (int i = 0; i < elementCount(); ++i)
+    if (needed[i] && !rows_[i]) todo.push_back(i);
+  const auto start = std::chrono::steady_clock::now();
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, todo.size(), 8),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t k = range.begin(); k != range.end(); ++k) {
+                        rows_[todo[k]] = std::make_unique<FormFactorRow>(method_.computeRow(todo[k]));
+                        if (progress) progress->advance(method_.raysPerRow());
+                      }
+                    });
+  rowsComputed_ += static_cast<int>(todo.size());
+  raysCast_ += static_cast<uint64_t>(todo.size()) * method_.raysPerRow();
+  seconds_ += secondsSince(start);
+}
+
+Eigen::SparseMatrix<double, Eigen::RowMajor> FormFactorCache::matrix() const {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < elementCount(); ++i)
+    if (rows_[i])
+      for (size_t k = 0; k < rows_[i]->targets.size(); ++k)
+        entries.emplace_back(i, rows_[i]->targets[k], rows_[i]->values[k]);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> f(elementCount(), elementCount());
+  f.setFromTriplets(entries.begin(), entries.end());
+  return f;
+}
+
+}  // namespace rad

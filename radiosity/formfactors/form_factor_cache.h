@@ -1,0 +1,44 @@
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <atomic>
+#include <memory>
+#include <vector>
+
+#include "radiosity/formfactors/hemisphere_form_factors.h"
+
+namespace rad {
+
+class Progress;
+
+// Rows of the form-factor matrix, computed on first use and kept. Progressive shooting asks for
+// the rows of the elements it shoots from, one at a time; the gathering solvers ask for all the
+// rows they need at once (in parallel). Either way each row is computed at most once.
+class FormFactorCache {
+ public:
+  explicit FormFactorCache(const HemisphereFormFactors& method);
+
+  // Not thread-safe: called from the solver's thread.
+  const FormFactorRow& row(int element);
+  bool hasRow(int element) const { return rows_[element] != nullptr; }
+
+  // Computes every row with needed[i] true that is not cached yet, in parallel.
+  void computeRows(const std::vector<bool>& needed, Progress* progress = nullptr);
+
+  // Sparse F with the cached rows (rows never computed are empty).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> matrix() const;
+
+  int elementCount() const { return static_cast<int>(rows_.size()); }
+  int rowsComputed() const { return rowsComputed_; }
+  uint64_t raysCast() const { return raysCast_; }
+  double seconds() const { return seconds_; }  // wall time spent computing rows
+
+ private:
+  const HemisphereFormFactors& method_;
+  std::vector<std::unique_ptr<FormFactorRow>> rows_;
+  int rowsComputed_ = 0;
+  uint64_t raysCast_ = 0;
+  double seconds_ = 0;
+};
+
+}  // namespace rad

@@ -1,0 +1,84 @@
+#include "radiosity/formfactors/hemisphere_form_factors.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+#include "radiosity/core/rng.h"
+#include "radiosity/formfactors/hemisphere_sampling.h"
+
+namespace rad {
+
+double FormFactorRow::valueFor(int target) const {
+  const auto it = std::lower_bound(targets.begin(), targets.end(), target);
+  return (it != targets.end() && *it == target) ? values[it - targets.begin()] : 0.0;
+}
+
+HemisphereFormFactors::HemisphereFormFactors(const PatchMesh& mesh, const RayCaster& rays,
+                                             HemisphereOptions options)
+    : mesh_(mesh), rays_(rays), options_(options) {
+  if (options_.raysPerElement < 1) throw std::invalid_argument("rays per element must be >= 1");
+  normals_.resize(mesh.elementCount());
+  for (int e = 0; e < mesh.elementCount(); ++e) normals_[e] = mesh.normal(e);
+}
+
+FormFactorRow HemisphereFormFactors::computeRow(int element) const {
+  const int n = options_.raysPerElement;
+  const auto corners = mesh_.corners(element);
+  const Frame frame(normals_[element]);
+
+  // All random numbers first, serially from the row's own stream: reproducible for any
+  // scheduling. A g×g jittered grid stratifies the first g² rays; the rest are plain random.
+  Rng rng(streamKey(options_.seed, static_cast<uint64_t>(element)));
+  const int g = static_cast<int>(std::sqrt(static_cast<double>(n)));
+  const int cells = g * g;
+  std::vector<int> positionCell(cells);
+  std::iota(positionCell.begin(), positionCell.end(), 0);
+  for (int k = cells - 1; k > 0; --k) std::swap(positionCell[k], positionCell[rng.below(k + 1)]);
+  std::vector<std::array<double, 4>> samples(n);
+  for (int k = 0; k < n; ++k) {
+    auto& s = samples[k];
+    for (double& u : s) u = rng.uniform();
+    if (k < cells) {
+      const int p = positionCell[k];
+      s[0] = ((k % g) + s[0]) / g;  // direction stratum k
+      s[1] = ((k / g) + s[1]) / g;
+      s[2] = ((p % g) + s[2]) / g;  // shuffled position stratum
+      s[3] = ((p / g) + s[3]) / g;
+    }
+  }
+
+  std::vector<int> firstHit(n, -1);
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 64), [&](const tbb::blocked_range<int>& range) {
+    for (int k = range.begin(); k != range.end(); ++k) {
+      const auto& s = samples[k];
+      const Eigen::Vector3d direction = frame.toWorld(cosineWeightedDirection(s[0], s[1]));
+      const Eigen::Vector3d origin =
+          rays_.liftOff(uniformPointOnTriangle(corners, s[2], s[3]), frame.normal, frame.normal);
+      const RayHit hit = rays_.closestHit(origin, direction);
+      // Only the front of a surface receives: a back-face hit is absorbed and counts as escaped.
+      if (hit.hit() && hit.element != element && normals_[hit.element].dot(direction) < 0)
+        firstHit[k] = hit.element;
+    }
+  });
+
+  std::sort(firstHit.begin(), firstHit.end());
+  FormFactorRow row;
+  const double perRay = 1.0 / n;
+  size_t k = 0;
+  while (k < firstHit.size() && firstHit[k] < 0) ++k;
+  row.escaped = k * perRay;
+  while (k < firstHit.size()) {
+    size_t end = k;
+    while (end < firstHit.size() && firstHit[end] == firstHit[k]) ++end;
+    row.targets.push_back(firstHit[k]);
+    row.values.push_back((end - k) * perRay);
+    k = end;
+  }
+  return row;
+}
+
+}  // namespace rad

@@ -1,0 +1,102 @@
+#include "radiosity/output/vertex_colors_ply.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <ios>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace rad {
+namespace {
+
+// Little-endian regardless of the host: the bytes are taken from the value, not from memory.
+void putU32(std::string& buffer, std::uint32_t v) {
+  for (int k = 0; k < 4; ++k) buffer.push_back(static_cast<char>((v >> (8 * k)) & 0xffu));
+}
+void putFloat(std::string& buffer, double v) {
+  const float f = static_cast<float>(v);
+  std::uint32_t bits;
+  std::memcpy(&bits, &f, sizeof bits);
+  putU32(buffer, bits);
+}
+void putInt(std::string& buffer, int v) { putU32(buffer, static_cast<std::uint32_t>(v)); }
+
+}  // namespace
+
+std::vector<Rgb> interpolateVertexRadiance(const VertexInterpolation& interpolation,
+                                           const std::vector<Rgb>& radiosityPerElement) {
+  std::vector<Eigen::Vector3d> perElement(radiosityPerElement.size());
+  for (size_t e = 0; e < radiosityPerElement.size(); ++e) {
+    const Rgb& b = radiosityPerElement[e];
+    perElement[e] = Eigen::Vector3d(b.r, b.g, b.b);
+  }
+  const std::vector<Eigen::Vector3d> perVertex = interpolation.interpolate(perElement);
+  std::vector<Rgb> radiance(perVertex.size());
+  // Lambertian: radiance is the same in every direction, B = π·L.
+  for (size_t v = 0; v < perVertex.size(); ++v)
+    radiance[v] = Rgb(perVertex[v].x(), perVertex[v].y(), perVertex[v].z()) / M_PI;
+  return radiance;
+}
+
+void writeVertexColorsPly(std::ostream& out, const VertexInterpolation& interpolation,
+                          const PatchMesh& mesh, const std::vector<Rgb>& radianceVertex,
+                          const ToneMap& toneMap) {
+  const int vertexCount = interpolation.vertexCount();
+  const int faceCount = mesh.elementCount();
+  if (static_cast<int>(radianceVertex.size()) != vertexCount)
+    throw std::invalid_argument("writeVertexColorsPly: " + std::to_string(radianceVertex.size()) +
+                                " radiance values for " + std::to_string(vertexCount) +
+                                " output vertices");
+
+  // Header in its own stream so the caller's formatting state is left alone.
+  std::ostringstream header;
+  header.precision(std::numeric_limits<double>::max_digits10);
+  header << "ply\n"
+         << "format binary_little_endian 1.0\n"
+         << "comment radiosity solver baked vertex colours\n"
+         << "comment radiance_r radiance_g radiance_b: outgoing radiance L = B/pi, "
+            "W m^-2 sr^-1, linear\n"
+         << "comment red green blue: 8-bit sRGB of clamp(exposure * radiance, 0, 1)\n"
+         << "comment exposure " << toneMap.exposure << "\n"
+         << "element vertex " << vertexCount << "\n"
+         << "property float x\nproperty float y\nproperty float z\n"
+         << "property float nx\nproperty float ny\nproperty float nz\n"
+         << "property float radiance_r\nproperty float radiance_g\nproperty float radiance_b\n"
+         << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+         << "element face " << faceCount << "\n"
+         << "property list uchar int vertex_indices\n"
+         << "end_header\n";
+  out << header.str();
+
+  // The body goes out in chunks: a million-element scene would otherwise need one 50 MB buffer.
+  constexpr size_t kChunk = size_t{1} << 20;
+  std::string body;
+  body.reserve(kChunk + 64);
+  const auto flushIfFull = [&](bool force) {
+    if (body.size() >= kChunk || (force && !body.empty())) {
+      out.write(body.data(), static_cast<std::streamsize>(body.size()));
+      body.clear();
+    }
+  };
+  for (int v = 0; v < vertexCount; ++v) {
+    const Eigen::Vector3d& p = interpolation.position(v);
+    const Eigen::Vector3d& n = interpolation.normal(v);
+    const Rgb& l = radianceVertex[v];
+    for (int k = 0; k < 3; ++k) putFloat(body, p[k]);
+    for (int k = 0; k < 3; ++k) putFloat(body, n[k]);
+    for (int k = 0; k < 3; ++k) putFloat(body, l[k]);
+    for (std::uint8_t c : toneMap.toSrgb8(l)) body.push_back(static_cast<char>(c));
+    flushIfFull(false);
+  }
+  for (int e = 0; e < faceCount; ++e) {
+    body.push_back(static_cast<char>(3));
+    for (int v : interpolation.triangle(e)) putInt(body, v);
+    flushIfFull(false);
+  }
+  flushIfFull(true);
+}
+
+}  // namespace rad

@@ -1,0 +1,76 @@
+#include "radiosity/scene/mtl_line_check.h"
+
+#include <set>
+#include <sstream>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/scene/obj_tokens.h"
+
+namespace rad {
+namespace {
+
+std::string channels(const std::vector<double>& values) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? " " : "") << values[i];
+  return out.str();
+}
+
+}  // namespace
+
+MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
+  // Only the statements the solver uses are checked; Ka, d and the like are passed on untouched.
+  static const std::set<std::string> kColours = {"Kd", "Ks", "Ke", "Tf", "Kt"};
+  static const std::set<std::string> kScalars = {"Ni", "Ns"};
+
+  MtlLineCheck result;
+  forEachLine(text, [&](int line, const std::vector<std::string>& tokens) {
+    if (!tokens.empty()) {
+      const std::string& keyword = tokens.front();
+      if (keyword == "newmtl") {
+        if (tokens.size() < 2) throw InputError(file, line, "'newmtl' needs a material name");
+        // tinyobjloader keeps the rest of the line as the name but `usemtl` reads one word.
+        if (tokens.size() > 2) {
+          throw InputError(file, line,
+                           "material name '" + tokens[1] + " " + tokens[2] +
+                               "...' contains spaces, which are not supported");
+        }
+        result.materials.push_back({tokens[1], file, line});
+      } else if (result.materials.empty()) {
+        // tinyobjloader would silently give these values to an unnamed material.
+        throw InputError(file, line, "'" + keyword + "' before any 'newmtl'");
+      } else if (kColours.count(keyword)) {
+        const std::vector<double> rgb = parseNumbers(tokens, 3, 3, file, line);
+        if (keyword == "Kd") {
+          for (double c : rgb) {
+            if (c < 0 || c >= 1) {
+              throw InputError(file, line,
+                               "Kd " + channels(rgb) +
+                                   ": reflectance must be in [0, 1) in every channel");
+            }
+          }
+        } else if (keyword == "Ke") {
+          for (double c : rgb) {
+            if (c < 0) {
+              throw InputError(file, line,
+                               "Ke " + channels(rgb) + ": emission must be non-negative");
+            }
+          }
+        }
+      } else if (kScalars.count(keyword)) {
+        parseNumbers(tokens, 1, 1, file, line);
+      } else if (keyword == "illum") {
+        long illum = 0;
+        if (tokens.size() != 2 || !parseIntegerToken(tokens[1], &illum) || illum < 0) {
+          throw InputError(file, line,
+                           "'illum' needs one non-negative integer, found '" +
+                               joinTokens({tokens.begin() + 1, tokens.end()}) + "'");
+        }
+      }
+    }
+    result.text += joinTokens(tokens);
+    result.text += '\n';
+  });
+  return result;
+}
+
+}  // namespace rad

@@ -1,0 +1,238 @@
+#include "radiosity/scene/obj_loader.h"
+
+#include <tiny_obj_loader.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
+#include "radiosity/scene/obj_line_check.h"
+
+namespace rad {
+namespace {
+
+// A face whose area is below this fraction of the squared bounding-box diagonal is degenerate:
+// relative, so that the test means the same in millimetres and in kilometres.
+constexpr double kDegenerateAreaFraction = 1e-12;
+constexpr int kMaxListedLines = 5;
+
+Rgb toRgb(const tinyobj::real_t* c) { return {c[0], c[1], c[2]}; }
+
+SurfaceKind surfaceKind(int illum) {
+  if (illum == 3 || illum == 5) return SurfaceKind::Mirror;
+  if (illum == 7) return SurfaceKind::Dielectric;
+  return SurfaceKind::Diffuse;
+}
+
+std::string lineList(const std::vector<int>& lines) {
+  std::string text;
+  for (std::size_t i = 0; i < lines.size() && i < kMaxListedLines; ++i) {
+    text += (i ? ", " : "") + std::to_string(lines[i]);
+  }
+  if (lines.size() > kMaxListedLines) text += ", ...";
+  return text;
+}
+
+Material convertMaterial(const tinyobj::material_t& m, const MaterialSource& source) {
+  if (m.name != source.name) {
+    throw RuntimeFailure(source.file + ":" + std::to_string(source.line) +
+                         ": tinyobjloader read material '" + source.name + "' as '" + m.name +
+                         "'");
+  }
+  Material material;
+  material.name = m.name;
+  material.diffuse = toRgb(m.diffuse);
+  material.emission = toRgb(m.emission);
+  material.specular = toRgb(m.specular);
+  material.transmittance = toRgb(m.transmittance);
+  material.ior = m.ior;
+  material.shininess = m.shininess;
+  material.illum = m.illum;
+  material.kind = surfaceKind(m.illum);
+  material.sourceFile = source.file;
+  material.sourceLine = source.line;
+
+  // The line check validated the text with strtod; tinyobjloader parses numbers its own way, so
+  // the Scene's invariants are checked once more on the values it actually produced.
+  const bool finite = material.diffuse.isFinite() && material.emission.isFinite() &&
+                      material.specular.isFinite() && material.transmittance.isFinite() &&
+                      std::isfinite(material.ior) && std::isfinite(material.shininess);
+  if (!finite || material.diffuse.minComponent() < 0 || material.diffuse.maxComponent() >= 1 ||
+      material.emission.minComponent() < 0) {
+    throw InputError(source.file, source.line,
+                     "material '" + source.name +
+                         "': values out of range after parsing (reflectance must be in [0, 1), "
+                         "emission non-negative)");
+  }
+  return material;
+}
+
+Material defaultMaterial(const std::string& objPath) {
+  Material material;
+  material.name = "default";
+  material.diffuse = Rgb::all(0.5);
+  material.sourceFile = objPath;
+  return material;
+}
+
+std::vector<Eigen::Vector3d> readPositions(const tinyobj::attrib_t& attrib, long expected) {
+  const std::size_t count = attrib.vertices.size() / 3;
+  if (static_cast<long>(count) != expected) {
+    throw RuntimeFailure("tinyobjloader read " + std::to_string(count) + " vertices, expected " +
+                         std::to_string(expected));
+  }
+  std::vector<Eigen::Vector3d> positions(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
+                    attrib.vertices[3 * i + 2]};
+  }
+  return positions;
+}
+
+double squaredDiagonal(const std::vector<Eigen::Vector3d>& positions) {
+  if (positions.empty()) return 0;
+  Eigen::Vector3d lo = positions.front(), hi = positions.front();
+  for (const Eigen::Vector3d& p : positions) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).squaredNorm();
+}
+
+// Repeated vertices (by index or by position) or an area that is zero at the scene's scale.
+bool isDegenerate(const std::vector<int>& vertices, const std::vector<Eigen::Vector3d>& positions,
+                  double diagonal2) {
+  const std::size_t n = vertices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (vertices[i] == vertices[j] || positions[vertices[i]] == positions[vertices[j]]) {
+        return true;
+      }
+    }
+  }
+  // Newell's formula: twice the vector area of a (possibly non-planar) polygon.
+  Eigen::Vector3d twiceArea = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < n; ++i) {
+    twiceArea += positions[vertices[i]].cross(positions[vertices[(i + 1) % n]]);
+  }
+  return 0.5 * twiceArea.norm() <= kDegenerateAreaFraction * diagonal2;
+}
+
+// Polygons in file order, each mapped back to its `f` line. With triangulate = false
+// tinyobjloader keeps one face per `f`, and its shapes hold them in file order.
+std::vector<ScenePolygon> readPolygons(const std::vector<tinyobj::shape_t>& shapes,
+                                       const ObjLineCheck& check, int materialCount) {
+  std::vector<ScenePolygon> polygons;
+  polygons.reserve(check.faceLines.size());
+  for (const tinyobj::shape_t& shape : shapes) {
+    std::size_t offset = 0;
+    for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+      const std::size_t k = polygons.size();
+      const int size = shape.mesh.num_face_vertices[f];
+      if (k >= check.faceLines.size() || size != check.faceSizes[k]) {
+        throw RuntimeFailure("tinyobjloader's faces do not match the OBJ's 'f' lines (face " +
+                             std::to_string(k + 1) + ")");
+      }
+      ScenePolygon polygon;
+      polygon.sourceLine = check.faceLines[k];
+      polygon.material = shape.mesh.material_ids[f];
+      if (polygon.material >= materialCount) {
+        throw RuntimeFailure("tinyobjloader gave the face at line " +
+                             std::to_string(polygon.sourceLine) + " an unknown material id");
+      }
+      for (int v = 0; v < size; ++v) {
+        polygon.vertices.push_back(shape.mesh.indices[offset + v].vertex_index);
+      }
+      offset += size;
+      polygons.push_back(std::move(polygon));
+    }
+  }
+  if (polygons.size() != check.faceLines.size()) {
+    throw RuntimeFailure("tinyobjloader read " + std::to_string(polygons.size()) +
+                         " faces, the OBJ has " + std::to_string(check.faceLines.size()));
+  }
+  return polygons;
+}
+
+}  // namespace
+
+Scene loadObjScene(const std::string& objPath) {
+  const ObjLineCheck check = checkObjFile(objPath);
+
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = false;  // polygons stay whole: each becomes one patch
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromString(check.objText, check.mtlText, config)) {
+    throw InputError(objPath, 0, "tinyobjloader could not read the file: " + reader.Error());
+  }
+  if (!reader.Warning().empty()) logDebug(objPath + ": tinyobjloader: " + reader.Warning());
+
+  Scene scene;
+  scene.sourcePath = objPath;
+  scene.positions = readPositions(reader.GetAttrib(), check.vertexCount);
+
+  // tinyobjloader numbers materials in definition order, as the line check does; it may append
+  // unnamed ones (an empty library), which nothing can refer to.
+  const std::vector<tinyobj::material_t>& loaded = reader.GetMaterials();
+  if (loaded.size() < check.materials.size()) {
+    throw RuntimeFailure("tinyobjloader read " + std::to_string(loaded.size()) +
+                         " materials, the MTL libraries define " +
+                         std::to_string(check.materials.size()));
+  }
+  for (std::size_t i = 0; i < check.materials.size(); ++i) {
+    scene.materials.push_back(convertMaterial(loaded[i], check.materials[i]));
+  }
+
+  const int defaultId = static_cast<int>(scene.materials.size());
+  std::vector<int> degenerateLines, defaultLines;
+  const double diagonal2 = squaredDiagonal(scene.positions);
+  for (ScenePolygon& polygon :
+       readPolygons(reader.GetShapes(), check, static_cast<int>(scene.materials.size()))) {
+    for (int v : polygon.vertices) {
+      if (v < 0 || v >= static_cast<int>(scene.positions.size())) {
+        throw RuntimeFailure("tinyobjloader gave the face at line " +
+                             std::to_string(polygon.sourceLine) + " a vertex out of range");
+      }
+    }
+    if (isDegenerate(polygon.vertices, scene.positions, diagonal2)) {
+      degenerateLines.push_back(polygon.sourceLine);
+      continue;
+    }
+    if (polygon.material < 0) {
+      polygon.material = defaultId;
+      defaultLines.push_back(polygon.sourceLine);
+    }
+    scene.polygons.push_back(std::move(polygon));
+  }
+
+  scene.skippedDegenerateFaces = static_cast<int>(degenerateLines.size());
+  if (!degenerateLines.empty()) {
+    logWarning(objPath + ": skipped " + std::to_string(degenerateLines.size()) +
+               " degenerate face(s) with repeated vertices or zero area (line " +
+               lineList(degenerateLines) + ")");
+  }
+  if (!defaultLines.empty()) {
+    scene.materials.push_back(defaultMaterial(objPath));
+    scene.usedDefaultMaterial = true;
+    logWarning(objPath + ": " + std::to_string(defaultLines.size()) +
+               " face(s) have no 'usemtl' (line " + lineList(defaultLines) +
+               "); using material 'default', grey with Kd 0.5");
+  }
+  logInfo("loaded " + objPath + ": " + std::to_string(scene.positions.size()) + " vertices, " +
+          std::to_string(scene.polygons.size()) + " polygons, " +
+          std::to_string(scene.materials.size()) + " materials, " +
+          std::to_string(scene.emitterCount()) + " emitting polygons");
+  return scene;
+}
+
+void requireEmitter(const Scene& scene) {
+  if (scene.emitterCount() > 0) return;
+  throw InputError(scene.sourcePath, 0,
+                   "no emitter: no polygon uses a material with positive Ke, so the scene would "
+                   "stay dark");
+}
+
+}  // namespace rad

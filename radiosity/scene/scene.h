@@ -1,0 +1,33 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "radiosity/scene/material.h"
+
+namespace rad {
+
+// One input polygon (an OBJ face). It becomes one patch of the PatchMesh.
+struct ScenePolygon {
+  std::vector<int> vertices;  // indices into Scene::positions, counter-clockwise seen from the front
+  int material = 0;           // index into Scene::materials
+  int sourceLine = 0;         // line of the `f` statement in the OBJ file
+};
+
+// A validated scene: every polygon has >= 3 distinct, in-range vertices and non-zero area,
+// every material has finite values with diffuse in [0, 1) and emission >= 0.
+struct Scene {
+  std::string sourcePath;
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<ScenePolygon> polygons;
+  std::vector<Material> materials;
+
+  int skippedDegenerateFaces = 0;  // zero-area or repeated-vertex faces, skipped with a warning
+  bool usedDefaultMaterial = false;  // some faces had no `usemtl`
+
+  int emitterCount() const;   // polygons whose material emits
+  bool hasSpecular() const;   // any polygon with a mirror or dielectric material
+};
+
+}  // namespace rad

@@ -1,0 +1,11 @@
+#pragma once
+
+#include "meshing/patch_mesh.h"
+#include "radiosity/scene/scene.h"
+
+namespace rad {
+
+// The scene's polygons as patches of a PatchMesh (one patch per polygon, same material index).
+PatchMesh buildPatchMesh(const Scene& scene);
+
+}  // namespace rad

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <Eigen/SparseCore>
+
+#include "radiosity/formfactors/form_factor_cache.h"
+#include "radiosity/solvers/radiosity_problem.h"
+#include "radiosity/solvers/solver.h"
+
+namespace rad {
+
+using SparseRows = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+// Builds F for a gathering solver: computes (in parallel) the rows of every reflecting element.
+// Rows of black elements are skipped: they receive but never pass light on.
+SparseRows gatherMatrix(const RadiosityProblem& problem, FormFactorCache& cache,
+                        Progress* progress = nullptr);
+
+// Jacobi iteration B_{k+1} = E + rho ∘ (F B_k), from B_0 = E: iteration k adds the k-th bounce
+// of light, so after k steps B_k = sum_{m<=k} (rho F)^m E exactly (the Neumann series).
+class JacobiSolver : public Solver {
+ public:
+  JacobiSolver(const RadiosityProblem& problem, SparseRows formFactors);
+  std::string name() const override { return "jacobi"; }
+  void step() override;
+  double progress() const override { return residual_; }
+  const std::vector<Rgb>& solution() const override { return solution_; }
+  int iterations() const override { return iterations_; }
+  std::string progressMeasure() const override { return "relative residual"; }
+
+ private:
+  const RadiosityProblem& problem_;
+  SparseRows f_;
+  std::vector<Rgb> solution_;
+  double residual_;
+  int iterations_ = 0;
+};
+
+// Gauss–Seidel: sweeps the rows in order, using each freshly updated B_j at once; converges
+// about twice as fast as Jacobi for the same work. Handles a non-zero F_ii exactly.
+class GaussSeidelSolver : public Solver {
+ public:
+  GaussSeidelSolver(const RadiosityProblem& problem, SparseRows formFactors);
+  std::string name() const override { return "gauss-seidel"; }
+  void step() override;
+  double progress() const override { return residual_; }
+  const std::vector<Rgb>& solution() const override { return solution_; }
+  int iterations() const override { return iterations_; }
+  std::string progressMeasure() const override { return "relative residual"; }
+
+ private:
+  const RadiosityProblem& problem_;
+  SparseRows f_;
+  std::vector<Rgb> solution_;
+  double residual_;
+  int iterations_ = 0;
+};
+
+// r = E + rho ∘ (F B) − B, relative to the emission (see relativeToEmission).
+double relativeResidual(const RadiosityProblem& problem, const SparseRows& f,
+                        const std::vector<Rgb>& b);
+
+// Reference solution of (I − diag(rho) F) B = E per channel by sparse LU (Eigen::SparseLU).
+std::vector<Rgb> solveDirect(const RadiosityProblem& problem, const SparseRows& f);
+
+}  // namespace rad

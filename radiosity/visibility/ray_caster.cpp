@@ -1,0 +1,115 @@
+#include "radiosity/visibility/ray_caster.h"
+
+#include <string>
+
+#include "radiosity/core/errors.h"
+
+namespace rad {
+namespace {
+
+// Embree reports errors through a callback on the calling thread; we keep the last message and
+// throw from check() after each API call that can fail, since exceptions must not cross C code.
+thread_local std::string t_lastError;
+
+void onEmbreeError(void*, RTCError code, const char* message) {
+  t_lastError = "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
+                (message ? message : "(no message)");
+}
+
+}  // namespace
+
+RayCaster::RayCaster(const PatchMesh& mesh) {
+  device_ = rtcNewDevice(nullptr);
+  if (!device_) throw RuntimeFailure("cannot create the Embree device");
+  rtcSetDeviceErrorFunction(device_, onEmbreeError, nullptr);
+
+  centre_ = 0.5 * (mesh.boundsMin() + mesh.boundsMax());
+  // Embree works in float; 1e-5 of the diagonal stays far above its intersection error for
+  // re-centred coordinates yet below any gap a modeller would leave on purpose.
+  offset_ = 1e-5 * std::max(mesh.boundsDiagonal(), std::numeric_limits<double>::min());
+
+  scene_ = rtcNewScene(device_);
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);  // watertight: no rays through shared edges
+  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+  const TriMesh& m = mesh.mesh();
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.n_vertices()));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), m.n_faces()));
+  check("allocating geometry buffers");
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    const Eigen::Vector3d p = mesh.position(v) - centre_;
+    vertices[3 * v + 0] = static_cast<float>(p.x());
+    vertices[3 * v + 1] = static_cast<float>(p.y());
+    vertices[3 * v + 2] = static_cast<float>(p.z());
+  }
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const auto c = mesh.cornerVertices(e);
+    for (int k = 0; k < 3; ++k) indices[3 * e + k] = static_cast<unsigned>(c[k]);
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene_, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene_);
+  check("building the BVH");
+}
+
+RayCaster::~RayCaster() {
+  if (scene_) rtcReleaseScene(scene_);
+  if (device_) rtcReleaseDevice(device_);
+}
+
+void RayCaster::check(const char* what) const {
+  if (rtcGetDeviceError(device_) != RTC_ERROR_NONE || !t_lastError.empty()) {
+    std::string message = t_lastError.empty() ? "unknown Embree error" : t_lastError;
+    t_lastError.clear();
+    throw RuntimeFailure(std::string(what) + ": " + message);
+  }
+}
+
+namespace {
+void fillRay(RTCRay& ray, const Eigen::Vector3d& o, const Eigen::Vector3d& d, double maxDistance) {
+  ray.org_x = static_cast<float>(o.x());
+  ray.org_y = static_cast<float>(o.y());
+  ray.org_z = static_cast<float>(o.z());
+  ray.dir_x = static_cast<float>(d.x());
+  ray.dir_y = static_cast<float>(d.y());
+  ray.dir_z = static_cast<float>(d.z());
+  ray.tnear = 0.0f;
+  ray.tfar = maxDistance < 3e38 ? static_cast<float>(maxDistance) : std::numeric_limits<float>::infinity();
+  ray.time = 0.0f;
+  ray.mask = 0xFFFFFFFFu;
+  ray.id = 0;
+  ray.flags = 0;
+}
+}  // namespace
+
+RayHit RayCaster::closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                             double maxDistance) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit;
+  fillRay(rayHit.ray, origin - centre_, direction, maxDistance);
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(scene_, &context, &rayHit);
+  RayHit result;
+  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+    result.element = static_cast<int>(rayHit.hit.primID);
+    result.distance = rayHit.ray.tfar;
+  }
+  return result;
+}
+
+bool RayCaster::occluded(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                         double maxDistance) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay ray;
+  fillRay(ray, origin - centre_, direction, maxDistance);
+  rtcOccluded1(scene_, &context, &ray);
+  return ray.tfar < 0.0f;  // Embree sets tfar to -inf when the ray is blocked
+}
+
+}  // namespace rad

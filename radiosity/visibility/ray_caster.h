@@ -1,0 +1,54 @@
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <Eigen/Core>
+#include <limits>
+
+#include "meshing/patch_mesh.h"
+
+namespace rad {
+
+struct RayHit {
+  int element = -1;  // -1: the ray left the scene
+  double distance = std::numeric_limits<double>::infinity();
+  bool hit() const { return element >= 0; }
+};
+
+// Owns the Embree device and a BVH over the PatchMesh's elements (primitive i = element i).
+// The geometry is re-centred on its bounding box before conversion to float, so precision does
+// not depend on where the scene sits in space; callers work in the scene's own coordinates.
+// Thread-safe for queries once constructed. Embree errors become RuntimeFailure exceptions.
+class RayCaster {
+ public:
+  explicit RayCaster(const PatchMesh& mesh);
+  ~RayCaster();
+  RayCaster(const RayCaster&) = delete;
+  RayCaster& operator=(const RayCaster&) = delete;
+
+  // Closest element hit along origin + t·direction for t in (0, maxDistance]. `direction` need not
+  // be normalised; distances are in units of |direction|.
+  RayHit closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                    double maxDistance = std::numeric_limits<double>::infinity()) const;
+  // True when anything blocks the open segment origin → origin + maxDistance·direction.
+  bool occluded(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                double maxDistance) const;
+
+  // Offset that lifts a ray origin off a surface: a small fraction of the scene's size, never a
+  // fixed constant, so scenes in millimetres and in kilometres behave alike.
+  double surfaceOffset() const { return offset_; }
+  // Moves a point on an element's surface off it, to the side `towards` points to.
+  Eigen::Vector3d liftOff(const Eigen::Vector3d& point, const Eigen::Vector3d& normal,
+                          const Eigen::Vector3d& towards) const {
+    return point + (normal.dot(towards) >= 0 ? offset_ : -offset_) * normal;
+  }
+
+ private:
+  void check(const char* what) const;
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  Eigen::Vector3d centre_;
+  double offset_ = 0;
+};
+
+}  // namespace rad

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages the project builds against. Idempotent, no prompts.
+# Run as root (or with sudo available). Skips apt entirely when everything is present.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libopenmesh-dev      # half-edge mesh for patches/elements
+  libembree-dev        # ray casting (form factors, visibility)
+  libeigen3-dev        # sparse matrices, direct reference solve
+  libtbb-dev           # parallel form-factor rows
+  libtinyobjloader-dev # OBJ + MTL with Ke, materials, groups
+  nlohmann-json3-dev   # summary.json
+  libcli11-dev         # command-line parsing
+  libgtest-dev         # tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
