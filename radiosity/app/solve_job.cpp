@@ -46,6 +46,21 @@ int defaultMaxIterations(SolverKind kind, int elements) {
   return 10000;
 }
 
+// A shooter's row decides how evenly its power lands on the receivers. An emitter element shoots a
+// large share of all the light (all of it, at first), so its row gets rays in proportion to that
+// share: with n elements, an element emitting the fraction s of the power gets about s·n times
+// the rays of an average element (at least 1×, at most 64×). A uniform emitter gets 1×.
+std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem) {
+  const double emitted = problem.emittedPower();
+  std::vector<int> multiplier(problem.size(), 1);
+  if (!(emitted > 0)) return multiplier;
+  for (int i = 0; i < problem.size(); ++i) {
+    const double share = problem.area[i] * problem.emission[i].sum() / emitted;
+    multiplier[i] = static_cast<int>(std::clamp(std::round(share * problem.size()), 1.0, 64.0));
+  }
+  return multiplier;
+}
+
 }  // namespace
 
 SolverKind parseSolverKind(const std::string& name) {
@@ -133,7 +148,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
 
   result.problem = makeProblem(result.scene, mesh);
   const RadiosityProblem& problem = result.problem;
-  HemisphereFormFactors method(mesh, rays, {options.raysPerElement, options.seed});
+  HemisphereFormFactors method(mesh, rays,
+                               {options.raysPerElement, options.seed, emitterRayMultipliers(problem)});
   FormFactorCache cache(method);
 
   int blackElements = 0;
@@ -150,7 +166,9 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   if (options.solver == SolverKind::Progressive) {
     solver = std::make_unique<ProgressiveSolver>(problem, cache);
   } else {
-    Progress progress("form factors", uint64_t(mesh.elementCount()) * options.raysPerElement, "rays");
+    uint64_t totalRays = 0;
+    for (int e = 0; e < mesh.elementCount(); ++e) totalRays += method.raysForRow(e);
+    Progress progress("form factors", totalRays, "rays");
     SparseRows f = gatherMatrix(problem, cache, &progress);
     progress.finish(std::to_string(cache.rowsComputed()) + " rows");
     if (options.solver == SolverKind::Southwell) {

@@ -21,7 +21,7 @@ const FormFactorRow& FormFactorCache::row(int element) {
     const auto start = std::chrono::steady_clock::now();
     rows_[element] = std::make_unique<FormFactorRow>(method_.computeRow(element));
     ++rowsComputed_;
-    raysCast_ += method_.raysPerRow();
+    raysCast_ += method_.raysForRow(element);
     seconds_ += secondsSince(start);
   }
   return *rows_[element];
@@ -36,11 +36,11 @@ void FormFactorCache::computeRows(const std::vector<bool>& needed, Progress* pro
                     [&](const tbb::blocked_range<size_t>& range) {
                       for (size_t k = range.begin(); k != range.end(); ++k) {
                         rows_[todo[k]] = std::make_unique<FormFactorRow>(method_.computeRow(todo[k]));
-                        if (progress) progress->advance(method_.raysPerRow());
+                        if (progress) progress->advance(method_.raysForRow(todo[k]));
                       }
                     });
   rowsComputed_ += static_cast<int>(todo.size());
-  raysCast_ += static_cast<uint64_t>(todo.size()) * method_.raysPerRow();
+  for (int i : todo) raysCast_ += method_.raysForRow(i);
   seconds_ += secondsSince(start);
 }
 

@@ -21,12 +21,15 @@ HemisphereFormFactors::HemisphereFormFactors(const PatchMesh& mesh, const RayCas
                                              HemisphereOptions options)
     : mesh_(mesh), rays_(rays), options_(options) {
   if (options_.raysPerElement < 1) throw std::invalid_argument("rays per element must be >= 1");
+  if (!options_.rayMultiplier.empty() &&
+      options_.rayMultiplier.size() != static_cast<size_t>(mesh.elementCount()))
+    throw std::invalid_argument("one ray multiplier per element expected");
   normals_.resize(mesh.elementCount());
   for (int e = 0; e < mesh.elementCount(); ++e) normals_[e] = mesh.normal(e);
 }
 
 FormFactorRow HemisphereFormFactors::computeRow(int element) const {
-  const int n = options_.raysPerElement;
+  const int n = raysForRow(element);
   const auto corners = mesh_.corners(element);
   const Frame frame(normals_[element]);
 

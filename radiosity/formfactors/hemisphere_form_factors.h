@@ -11,6 +11,9 @@ namespace rad {
 struct HemisphereOptions {
   int raysPerElement = 1024;
   uint64_t seed = 1;
+  // Optional per-element multiplier of raysPerElement (empty: 1 everywhere). Used to give the
+  // rows of emitters, which carry all the direct light, as many rays as they need.
+  std::vector<int> rayMultiplier = {};
 };
 
 // Form factors by cosine-weighted hemisphere ray casting (Monte Carlo "gathering" estimate):
@@ -26,7 +29,10 @@ class HemisphereFormFactors {
   HemisphereFormFactors(const PatchMesh& mesh, const RayCaster& rays, HemisphereOptions options);
 
   FormFactorRow computeRow(int element) const;  // uses TBB across the row's rays
-  int raysPerRow() const { return options_.raysPerElement; }
+  int raysForRow(int element) const {
+    return options_.rayMultiplier.empty() ? options_.raysPerElement
+                                          : options_.raysPerElement * options_.rayMultiplier[element];
+  }
   const PatchMesh& mesh() const { return mesh_; }
 
  private:

@@ -43,9 +43,9 @@ MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
         if (keyword == "Kd") {
           for (double c : rgb) {
             if (c < 0 || c >= 1) {
-              throw InputError(file, line,
-                               "Kd " + channels(rgb) +
-                                   ": reflectance must be in [0, 1) in every channel");
+              throw InputError(
+                  file, line,
+                  "Kd " + channels(rgb) + ": reflectance must be in [0, 1) in every channel");
             }
           }
         } else if (keyword == "Ke") {

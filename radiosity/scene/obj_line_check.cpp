@@ -4,6 +4,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
@@ -129,13 +130,11 @@ class ObjChecker {
   void face(std::size_t size, int line) {
     if (size < 3) {
       throw InputError(path_, line,
-                       "face has " + std::to_string(size) +
-                           " vertices; a face needs at least 3");
+                       "face has " + std::to_string(size) + " vertices; a face needs at least 3");
     }
     if (size > 255) {  // tinyobjloader stores face sizes in an unsigned char
       throw InputError(path_, line,
-                       "face has " + std::to_string(size) +
-                           " vertices; at most 255 are supported");
+                       "face has " + std::to_string(size) + " vertices; at most 255 are supported");
     }
     result_.faceLines.push_back(line);
     result_.faceSizes.push_back(static_cast<int>(size));
@@ -187,8 +186,8 @@ class ObjChecker {
       // tinyobjloader resolves `usemtl` to the first definition; say so rather than guess.
       const MaterialSource& first = result_.materials[found->second];
       logWarning(material.file + ":" + std::to_string(material.line) + ": material '" +
-                 material.name + "' is defined again; the first definition (" + first.file +
-                 ":" + std::to_string(first.line) + ") is used");
+                 material.name + "' is defined again; the first definition (" + first.file + ":" +
+                 std::to_string(first.line) + ") is used");
     } else {
       materialIndex_.emplace(material.name, static_cast<int>(result_.materials.size()));
     }

@@ -38,8 +38,7 @@ std::string lineList(const std::vector<int>& lines) {
 Material convertMaterial(const tinyobj::material_t& m, const MaterialSource& source) {
   if (m.name != source.name) {
     throw RuntimeFailure(source.file + ":" + std::to_string(source.line) +
-                         ": tinyobjloader read material '" + source.name + "' as '" + m.name +
-                         "'");
+                         ": tinyobjloader read material '" + source.name + "' as '" + m.name + "'");
   }
   Material material;
   material.name = m.name;
@@ -85,8 +84,7 @@ std::vector<Eigen::Vector3d> readPositions(const tinyobj::attrib_t& attrib, long
   }
   std::vector<Eigen::Vector3d> positions(count);
   for (std::size_t i = 0; i < count; ++i) {
-    positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
-                    attrib.vertices[3 * i + 2]};
+    positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
   }
   return positions;
 }

@@ -60,6 +60,8 @@ bool readTextFile(const std::string& path, std::string* text) {
   buffer << in.rdbuf();
   if (in.bad()) return false;
   *text = buffer.str();
+  // A UTF-8 byte-order mark would otherwise glue itself to the first keyword.
+  if (text->compare(0, 3, "\xEF\xBB\xBF") == 0) text->erase(0, 3);
   return true;
 }
 

@@ -17,7 +17,8 @@ namespace rad {
 using LineVisitor = std::function<void(int line, const std::vector<std::string>& tokens)>;
 void forEachLine(const std::string& text, const LineVisitor& visit);
 
-// Reads a whole file into `text`; false when it cannot be opened or read.
+// Reads a whole file into `text`, without a leading UTF-8 byte-order mark; false when it cannot
+// be opened or read.
 bool readTextFile(const std::string& path, std::string* text);
 
 // Joins tokens with single spaces: the normalised line handed on to tinyobjloader.

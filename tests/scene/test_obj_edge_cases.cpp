@@ -32,8 +32,8 @@ class ObjEdgeCases : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("radiosity_scene_" + std::to_string(::getpid()) + "_" +
-                                        info->name());
+    dir_ = fs::temp_directory_path() /
+           ("radiosity_scene_" + std::to_string(::getpid()) + "_" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -90,9 +90,9 @@ TEST_F(ObjEdgeCases, AcceptsCrlfCommentsRelativeIndicesAndGroups) {
   EXPECT_DOUBLE_EQ(scene.materials[0].emission.b, 3.0);
 }
 
-TEST_F(ObjEdgeCases, AcceptsOldMacLineEndsTabsAndAnEmptyLibrary) {
+TEST_F(ObjEdgeCases, AcceptsOldMacLineEndsTabsByteOrderMarkAndAnEmptyLibrary) {
   write("empty.mtl", "");
-  write("m.mtl", "newmtl grey\rKd\t0.5 0.5 0.5");
+  write("m.mtl", "\xEF\xBB\xBFnewmtl grey\rKd\t0.5 0.5 0.5");
   // A hexagon, groups between faces of one material, and no newline at the end.
   const std::string obj = write("s.obj",
                                 "mtllib empty.mtl\rmtllib m.mtl\r"
@@ -135,8 +135,8 @@ TEST_F(ObjEdgeCases, IllumSelectsTheSurfaceKind) {
   write("m.mtl",
         "newmtl a\nillum 2\nnewmtl b\nillum 3\nnewmtl c\nillum 5\nnewmtl d\nillum 7\n"
         "Ni 1.5\nTf 1 1 1\nNs 10\n");
-  const std::string obj = write("s.obj", std::string("mtllib m.mtl\n") + kSquareVertices +
-                                             "usemtl a\nf 1 2 3\n");
+  const std::string obj =
+      write("s.obj", std::string("mtllib m.mtl\n") + kSquareVertices + "usemtl a\nf 1 2 3\n");
   const Scene scene = loadObjScene(obj);
   ASSERT_EQ(scene.materials.size(), 4u);
   EXPECT_EQ(scene.materials[0].kind, SurfaceKind::Diffuse);

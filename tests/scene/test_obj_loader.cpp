@@ -18,8 +18,8 @@ Eigen::Vector3d vectorArea(const Scene& scene, const ScenePolygon& polygon) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   const std::size_t n = polygon.vertices.size();
   for (std::size_t i = 0; i < n; ++i) {
-    sum += scene.positions[polygon.vertices[i]].cross(
-        scene.positions[polygon.vertices[(i + 1) % n]]);
+    sum +=
+        scene.positions[polygon.vertices[i]].cross(scene.positions[polygon.vertices[(i + 1) % n]]);
   }
   return 0.5 * sum;
 }

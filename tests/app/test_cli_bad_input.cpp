@@ -1,0 +1,85 @@
+// Bad input on the command line: a clear message naming the file and line, a non-zero exit,
+// and no output directory or file left behind.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "tests/support/run_command.h"
+
+namespace rad {
+namespace {
+
+const std::string kBad = std::string(RADIOSITY_DATA_DIR) + "/tests/bad/";
+
+struct BadCase {
+  std::string file;      // scene to load
+  std::string location;  // "file:line:" expected in the message
+  std::string phrase;
+};
+
+class BadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadInput, FailsClearlyAndWritesNothing) {
+  const BadCase& c = GetParam();
+  const auto out = testing::scratchPath("bad_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + c.file);
+  const auto result = testing::runRadiosity("solve " + kBad + c.file + " --out " + out.string() + " --rays 16");
+  EXPECT_EQ(result.exitCode, 1) << result.stderrText;
+  EXPECT_NE(result.stderrText.find("error: "), std::string::npos) << result.stderrText;
+  EXPECT_NE(result.stderrText.find(c.location), std::string::npos) << result.stderrText;
+  EXPECT_NE(result.stderrText.find(c.phrase), std::string::npos) << result.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(out)) << "a failed run created " << out;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Files, BadInput,
+    ::testing::Values(BadCase{"nan_vertex.obj", "nan_vertex.obj:5:", "non-finite"},
+                      BadCase{"malformed_number.obj", "malformed_number.obj:5:", "malformed number"},
+                      BadCase{"missing_material.obj", "missing_material.obj:13:", "missing material"},
+                      BadCase{"missing_mtllib.obj", "missing_mtllib.obj:2:", "cannot open material library"},
+                      BadCase{"reflectance_one.obj", "reflectance_one.mtl:8:", "reflectance must be in [0, 1)"},
+                      BadCase{"negative_emission.obj", "negative_emission.mtl:4:", "emission must be non-negative"},
+                      BadCase{"no_emitter.obj", "no_emitter.obj", "no emitter"},
+                      BadCase{"bad_index.obj", "bad_index.obj:14:", "out of range"},
+                      BadCase{"short_face.obj", "short_face.obj:14:", "at least 3"},
+                      BadCase{"does_not_exist.obj", "does_not_exist.obj", "cannot open"}),
+    [](const ::testing::TestParamInfo<BadCase>& info) {
+      std::string name = info.param.file.substr(0, info.param.file.find('.'));
+      for (char& ch : name) if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return name;
+    });
+
+const std::string kCornell = std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box.obj";
+
+TEST(BadOptions, UnknownOptionIsAUsageError) {
+  const auto out = testing::scratchPath("unknown_option");
+  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --frobnicate 3");
+  EXPECT_EQ(result.exitCode, 2);
+  EXPECT_NE(result.stderrText.find("frobnicate"), std::string::npos) << result.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(BadOptions, UnknownSolverAndImpossibleValuesAreErrors) {
+  const auto out = testing::scratchPath("bad_values");
+  for (const std::string args : {"--solver magic", "--rays 0", "--tolerance -1", "--max-area -2",
+                                  "--bounces 3 --solver gauss-seidel", "--rays abc"}) {
+    const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " " + args);
+    EXPECT_NE(result.exitCode, 0) << args;
+    EXPECT_NE(result.stderrText.find("rror"), std::string::npos) << args << ": " << result.stderrText;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  }
+}
+
+TEST(BadOptions, OutputPathThatIsAFileFailsWithoutTouchingIt) {
+  const auto out = testing::scratchPath("out_is_file");
+  { std::ofstream(out) << "keep me\n"; }
+  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --rays 16 --elements 50");
+  EXPECT_EQ(result.exitCode, 1) << result.stderrText;
+  EXPECT_NE(result.stderrText.find(out.string()), std::string::npos) << result.stderrText;
+  std::ifstream in(out);
+  std::string content;
+  std::getline(in, content);
+  EXPECT_EQ(content, "keep me");
+  std::filesystem::remove(out);
+}
+
+}  // namespace
+}  // namespace rad
