@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Installs the dependencies, builds, and runs the whole test suite (every label, slow included).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh
+ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 900
