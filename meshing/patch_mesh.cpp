@@ -20,6 +20,8 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
   mesh_.add_property(materialId_, "material");
   mesh_.add_property(level_, "level");
   mesh_.add_property(area_, "area");
+  mesh_.add_property(radiosity_, "B");
+  mesh_.add_property(unshot_, "unshot");
 
   std::vector<TriMesh::VertexHandle> handles(positions.size());
   for (size_t i = 0; i < positions.size(); ++i) handles[i] = mesh_.add_vertex(toOm(positions[i]));
@@ -58,6 +60,8 @@ void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
   mesh_.property(patchId_, f) = patch;
   mesh_.property(materialId_, f) = material;
   mesh_.property(level_, f) = 0;
+  mesh_.property(radiosity_, f) = Eigen::Vector3d::Zero();
+  mesh_.property(unshot_, f) = Eigen::Vector3d::Zero();
   updateArea(f);
 }
 

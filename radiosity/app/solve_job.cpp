@@ -205,6 +205,15 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   result.times.solve = std::max(0.0, solveAndRows - cache.seconds());
 
   result.radiosity = solver->solution();
+  const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver.get());
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const Rgb& b = result.radiosity[e];
+    result.mesh->setRadiosity(e, {b.r, b.g, b.b});
+    if (shooting) {
+      const Rgb& u = shooting->unshotPower()[e];
+      result.mesh->setUnshot(e, {u.r, u.g, u.b});
+    }
+  }
   result.solverName = solver->name();
   result.progressMeasure = solver->progressMeasure();
   result.iterations = solver->iterations();

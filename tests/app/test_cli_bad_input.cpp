@@ -16,6 +16,9 @@ struct BadCase {
   std::string phrase;
 };
 
+// Readable names in test listings instead of gtest's byte dump.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.file; }
+
 class BadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(BadInput, FailsClearlyAndWritesNothing) {
