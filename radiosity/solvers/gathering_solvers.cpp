@@ -25,8 +25,13 @@ double relativeResidual(const RadiosityProblem& problem, const SparseRows& f,
   return relativeToEmission(problem, r);
 }
 
-JacobiSolver::JacobiSolver(const RadiosityProblem& problem, SparseRows formFactors)
+GatheringSolver::GatheringSolver(const RadiosityProblem& problem, SparseRows formFactors)
     : problem_(problem), f_(std::move(formFactors)), solution_(problem.emission) {
+  residual_ = relativeResidual(problem_, f_, solution_);
+}
+
+void GatheringSolver::finishSweep() {
+  ++iterations_;
   residual_ = relativeResidual(problem_, f_, solution_);
 }
 
@@ -35,13 +40,7 @@ void JacobiSolver::step() {
   for (int i = 0; i < problem_.size(); ++i)
     next[i] = problem_.emission[i] + problem_.reflectance[i] * gatherRow(f_, i, solution_);
   solution_.swap(next);
-  ++iterations_;
-  residual_ = relativeResidual(problem_, f_, solution_);
-}
-
-GaussSeidelSolver::GaussSeidelSolver(const RadiosityProblem& problem, SparseRows formFactors)
-    : problem_(problem), f_(std::move(formFactors)), solution_(problem.emission) {
-  residual_ = relativeResidual(problem_, f_, solution_);
+  finishSweep();
 }
 
 void GaussSeidelSolver::step() {
@@ -57,8 +56,7 @@ void GaussSeidelSolver::step() {
     solution_[i] = {numerator.r / (1 - rho.r * selfFactor), numerator.g / (1 - rho.g * selfFactor),
                     numerator.b / (1 - rho.b * selfFactor)};
   }
-  ++iterations_;
-  residual_ = relativeResidual(problem_, f_, solution_);
+  finishSweep();
 }
 
 std::vector<Rgb> solveDirect(const RadiosityProblem& problem, const SparseRows& f) {

@@ -15,44 +15,44 @@ using SparseRows = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 SparseRows gatherMatrix(const RadiosityProblem& problem, FormFactorCache& cache,
                         Progress* progress = nullptr);
 
-// Jacobi iteration B_{k+1} = E + rho ∘ (F B_k), from B_0 = E: iteration k adds the k-th bounce
-// of light, so after k steps B_k = sum_{m<=k} (rho F)^m E exactly (the Neumann series).
-class JacobiSolver : public Solver {
+// What Jacobi and Gauss–Seidel share: the gathering rows, the current B (starting at B_0 = E)
+// and the relative residual, recomputed exactly after every sweep.
+class GatheringSolver : public Solver {
  public:
-  JacobiSolver(const RadiosityProblem& problem, SparseRows formFactors);
-  std::string name() const override { return "jacobi"; }
-  void step() override;
   double progress() const override { return residual_; }
   const std::vector<Rgb>& solution() const override { return solution_; }
   int iterations() const override { return iterations_; }
   std::string progressMeasure() const override { return "relative residual"; }
 
- private:
+ protected:
+  GatheringSolver(const RadiosityProblem& problem, SparseRows formFactors);
+  void finishSweep();  // counts the sweep and updates the residual
+
   const RadiosityProblem& problem_;
   SparseRows f_;
   std::vector<Rgb> solution_;
-  double residual_;
+  double residual_ = 0;
   int iterations_ = 0;
+};
+
+// Jacobi iteration B_{k+1} = E + rho ∘ (F B_k), from B_0 = E: iteration k adds the k-th bounce
+// of light, so after k steps B_k = sum_{m<=k} (rho F)^m E exactly (the Neumann series).
+class JacobiSolver : public GatheringSolver {
+ public:
+  JacobiSolver(const RadiosityProblem& problem, SparseRows formFactors)
+      : GatheringSolver(problem, std::move(formFactors)) {}
+  std::string name() const override { return "jacobi"; }
+  void step() override;
 };
 
 // Gauss–Seidel: sweeps the rows in order, using each freshly updated B_j at once; converges
 // about twice as fast as Jacobi for the same work. Handles a non-zero F_ii exactly.
-class GaussSeidelSolver : public Solver {
+class GaussSeidelSolver : public GatheringSolver {
  public:
-  GaussSeidelSolver(const RadiosityProblem& problem, SparseRows formFactors);
+  GaussSeidelSolver(const RadiosityProblem& problem, SparseRows formFactors)
+      : GatheringSolver(problem, std::move(formFactors)) {}
   std::string name() const override { return "gauss-seidel"; }
   void step() override;
-  double progress() const override { return residual_; }
-  const std::vector<Rgb>& solution() const override { return solution_; }
-  int iterations() const override { return iterations_; }
-  std::string progressMeasure() const override { return "relative residual"; }
-
- private:
-  const RadiosityProblem& problem_;
-  SparseRows f_;
-  std::vector<Rgb> solution_;
-  double residual_;
-  int iterations_ = 0;
 };
 
 // r = E + rho ∘ (F B) − B, relative to the emission (see relativeToEmission).

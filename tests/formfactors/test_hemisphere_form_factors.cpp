@@ -6,6 +6,7 @@
 #include "radiosity/formfactors/form_factor_cache.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
 #include "tests/support/analytic_form_factors.h"
+#include "tests/support/closed_cube.h"
 
 namespace rad {
 namespace {
@@ -88,21 +89,8 @@ TEST(HemisphereFormFactors, ReciprocityOfUnequalPerpendicularRectangles) {
   EXPECT_NEAR(a1f12, 2 * f12, 4 * 2 * sigma(f12, raysOnPatch(mesh, 0, 2048)));
 }
 
-// A closed cube with inward faces: every ray from every element hits a front face.
-PatchMesh closedCube() {
-  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                    {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  return PatchMesh(p, {{{0, 1, 2, 3}, 0},    // z = 0, facing +z
-                       {{4, 7, 6, 5}, 0},    // z = 1, facing −z
-                       {{0, 4, 5, 1}, 0},    // y = 0, facing +y
-                       {{3, 2, 6, 7}, 0},    // y = 1, facing −y
-                       {{0, 3, 7, 4}, 0},    // x = 0, facing +x
-                       {{1, 5, 6, 2}, 0}});  // x = 1, facing −x
-}
-
 TEST(HemisphereFormFactors, RowsOfAClosedBoxSumToOne) {
-  PatchMesh mesh = closedCube();
-  mesh.subdivideUniform(0.02);
+  PatchMesh mesh = testing::closedCube(0.02);
   RayCaster rays(mesh);
   HemisphereFormFactors method(mesh, rays, {256, 5});
   FormFactorCache cache(method);
@@ -116,8 +104,7 @@ TEST(HemisphereFormFactors, RowsOfAClosedBoxSumToOne) {
 }
 
 TEST(HemisphereFormFactors, RowDoesNotDependOnThreadsOrOrder) {
-  PatchMesh mesh = closedCube();
-  mesh.subdivideUniform(0.05);
+  PatchMesh mesh = testing::closedCube(0.05);
   RayCaster rays(mesh);
   HemisphereFormFactors method(mesh, rays, {500, 99});
   FormFactorCache all(method);
