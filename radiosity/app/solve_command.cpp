@@ -1,0 +1,57 @@
+// `radiosity solve SCENE.obj --out DIR`: the diffuse radiosity solution and its files.
+#include <memory>
+
+#include "radiosity/app/commands.h"
+#include "radiosity/app/solve_job.h"
+#include "radiosity/core/log.h"
+
+namespace rad {
+
+void addCommonFlags(CLI::App& command) {
+  command.add_flag_callback("--quiet,-q", [] { setLogLevel(LogLevel::Quiet); },
+                            "Only warnings and errors on stderr");
+}
+
+// Options shared by every command that solves first (solve, render, bake, view).
+void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solverName) {
+  command.add_option("--solver", solverName,
+                     "progressive (lazy rows) | southwell (progressive on all rows) | gauss-seidel | jacobi")
+      ->default_val("progressive");
+  command.add_option("--rays", options.raysPerElement, "Hemisphere rays per element")
+      ->default_val(options.raysPerElement);
+  command.add_option("--max-area", options.maxArea,
+                     "Largest element area in scene units² (default: total area / --elements)");
+  command.add_option("--elements", options.targetElements,
+                     "Approximate element count when --max-area is not given")
+      ->default_val(options.targetElements)
+      ->check(CLI::PositiveNumber);
+  command.add_option("--seed", options.seed, "Random seed")->default_val(options.seed);
+  command.add_option("--threads", options.threads, "Worker threads (0: all cores)")
+      ->default_val(options.threads);
+  command.add_option("--tolerance", options.tolerance,
+                     "Stop at this relative residual (gauss-seidel, jacobi) or unshot fraction "
+                     "(progressive, southwell)")
+      ->default_val(options.tolerance);
+  command.add_option("--max-iterations", options.maxIterations,
+                     "Iteration budget: sweeps, bounces or shots (0: solver default)");
+  command.add_option("--bounces", options.bounces, "Jacobi only: exactly N bounces of light");
+}
+
+void registerSolveCommand(CLI::App& app, CommandAction& run) {
+  auto options = std::make_shared<SolveOptions>();
+  auto solverName = std::make_shared<std::string>("progressive");
+  CLI::App* solve = app.add_subcommand("solve", "Solve the diffuse radiosity of a scene");
+  solve->add_option("scene", options->scenePath, "OBJ scene file (materials from its MTL)")->required();
+  solve->add_option("--out", options->outputDir, "Output directory (created if missing)")->required();
+  addSolveOptions(*solve, *options, *solverName);
+  addCommonFlags(*solve);
+  solve->callback([&run, options, solverName] {
+    run = [options, solverName] {
+      options->solver = parseSolverKind(*solverName);
+      SolveResult result = runSolve(*options);
+      writeSolveOutputs(*options, result);
+    };
+  });
+}
+
+}  // namespace rad
