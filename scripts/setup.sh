@@ -12,6 +12,8 @@ packages=(
   libtinyobjloader-dev # OBJ + MTL with Ke, materials, groups
   nlohmann-json3-dev   # summary.json
   libcli11-dev         # command-line parsing
+  libopenexr-dev       # HDR images (EXR)
+  libstb-dev           # PNG writer (stb_image_write)
   libgtest-dev         # tests
 )
 

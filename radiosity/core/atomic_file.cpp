@@ -36,6 +36,25 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
+namespace {
+std::string temporaryName(const std::string& path) {
+  return path + ".tmp" + std::to_string(static_cast<long>(getpid()));
+}
+}  // namespace
+
+AtomicPath::AtomicPath(std::string path) : path_(std::move(path)), tempPath_(temporaryName(path_)) {}
+
+AtomicPath::~AtomicPath() {
+  if (!committed_) std::remove(tempPath_.c_str());
+}
+
+void AtomicPath::commit() {
+  std::error_code ec;
+  std::filesystem::rename(tempPath_, path_, ec);
+  if (ec) throw RuntimeFailure("cannot rename " + tempPath_ + " to " + path_ + ": " + ec.message());
+  committed_ = true;
+}
+
 void ensureDirectory(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

@@ -27,6 +27,24 @@ class AtomicFile {
   bool committed_ = false;
 };
 
+// For libraries that write a file by name (OpenEXR): hands out a temporary path next to the
+// destination; commit() renames it into place, destruction without commit removes it.
+class AtomicPath {
+ public:
+  explicit AtomicPath(std::string path);
+  ~AtomicPath();
+  AtomicPath(const AtomicPath&) = delete;
+  AtomicPath& operator=(const AtomicPath&) = delete;
+
+  const std::string& tempPath() const { return tempPath_; }
+  const std::string& path() const { return path_; }
+  void commit();
+
+ private:
+  std::string path_, tempPath_;
+  bool committed_ = false;
+};
+
 // Creates a directory (and parents) for outputs; throws InputError naming it if that fails.
 void ensureDirectory(const std::string& dir);
 

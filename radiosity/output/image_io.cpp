@@ -1,0 +1,108 @@
+#include "radiosity/output/image_io.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+
+#include <filesystem>
+
+#include "radiosity/core/atomic_file.h"
+#include "radiosity/core/errors.h"
+
+// stb's PNG encoder, compiled privately into this file only.
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#include <stb/stb_image_write.h>
+#pragma GCC diagnostic pop
+
+namespace rad {
+
+void writeExr(const std::string& path, const ImageRgb& image) {
+  const int w = image.width, h = image.height;
+  std::vector<float> channels[3];
+  for (int c = 0; c < 3; ++c) {
+    channels[c].resize(static_cast<size_t>(w) * h);
+    for (size_t i = 0; i < channels[c].size(); ++i) channels[c][i] = static_cast<float>(image.pixels[i][c]);
+  }
+  AtomicPath file(path);
+  try {
+    Imf::Header header(w, h);
+    const char* names[3] = {"R", "G", "B"};
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < 3; ++c) {
+      header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+      frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(channels[c].data()),
+                                        sizeof(float), sizeof(float) * w));
+    }
+    Imf::OutputFile out(file.tempPath().c_str(), header);
+    out.setFrameBuffer(frame);
+    out.writePixels(h);
+  } catch (const std::exception& e) {
+    throw RuntimeFailure("cannot write " + path + ": " + e.what());
+  }
+  file.commit();
+}
+
+ImageRgb readExr(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "cannot open EXR file");
+  try {
+    Imf::InputFile in(path.c_str());
+    const Imath::Box2i window = in.header().dataWindow();
+    const int w = window.max.x - window.min.x + 1, h = window.max.y - window.min.y + 1;
+    const char* names[3] = {"R", "G", "B"};
+    for (const char* name : names)
+      if (!in.header().channels().findChannel(name))
+        throw InputError(path, 0, std::string("EXR file has no '") + name + "' channel");
+    std::vector<float> channels[3];
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < 3; ++c) {
+      channels[c].resize(static_cast<size_t>(w) * h);
+      char* base = reinterpret_cast<char*>(channels[c].data()) -
+                   (static_cast<ptrdiff_t>(window.min.x) + static_cast<ptrdiff_t>(window.min.y) * w) * sizeof(float);
+      frame.insert(names[c], Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * w));
+    }
+    in.setFrameBuffer(frame);
+    in.readPixels(window.min.y, window.max.y);
+    ImageRgb image(w, h);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+      image.pixels[i] = {channels[0][i], channels[1][i], channels[2][i]};
+    return image;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(path, 0, std::string("not a readable EXR file: ") + e.what());
+  }
+}
+
+std::vector<std::uint8_t> encodePng(const ImageRgb& radiance, const ToneMap& toneMap) {
+  std::vector<std::uint8_t> rgb(static_cast<size_t>(radiance.width) * radiance.height * 3);
+  for (size_t i = 0; i < radiance.pixels.size(); ++i) {
+    const auto c = toneMap.toSrgb8(radiance.pixels[i]);
+    rgb[3 * i + 0] = c[0];
+    rgb[3 * i + 1] = c[1];
+    rgb[3 * i + 2] = c[2];
+  }
+  std::vector<std::uint8_t> png;
+  auto append = [](void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    out->insert(out->end(), bytes, bytes + size);
+  };
+  if (!stbi_write_png_to_func(append, &png, radiance.width, radiance.height, 3, rgb.data(),
+                              radiance.width * 3))
+    throw RuntimeFailure("PNG encoding failed");
+  return png;
+}
+
+void writePng(const std::string& path, const ImageRgb& radiance, const ToneMap& toneMap) {
+  const std::vector<std::uint8_t> png = encodePng(radiance, toneMap);
+  AtomicFile file(path, /*binary=*/true);
+  file.stream().write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  file.commit();
+}
+
+}  // namespace rad
