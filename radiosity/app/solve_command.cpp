@@ -16,7 +16,8 @@ void addCommonFlags(CLI::App& command) {
 void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solverName) {
   command.add_option("--solver", solverName,
                      "progressive (lazy rows) | southwell (progressive on all rows) | gauss-seidel | jacobi")
-      ->default_val("progressive");
+      ->default_val("progressive")
+      ->check(CLI::IsMember({"progressive", "southwell", "gauss-seidel", "jacobi"}));
   command.add_option("--rays", options.raysPerElement, "Hemisphere rays per element")
       ->default_val(options.raysPerElement);
   command.add_option("--max-area", options.maxArea,

@@ -22,6 +22,10 @@ namespace rad {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Limits checked before the work starts, so absurd options fail at once with a clear message.
+constexpr int kMaxRaysPerElement = 1 << 24;  // × 64 for emitter rows still fits an int
+constexpr double kMaxElements = 4e6;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string formatNumber(double v) {
@@ -108,6 +112,8 @@ SolveResult runSolve(const SolveOptions& options) {
 
 SolveResult solveScene(Scene scene, const SolveOptions& options) {
   if (options.raysPerElement < 1) throw InputError("--rays must be at least 1");
+  if (options.raysPerElement > kMaxRaysPerElement)
+    throw InputError("--rays must be at most " + std::to_string(kMaxRaysPerElement));
   if (options.maxArea < 0 || !std::isfinite(options.maxArea))
     throw InputError("--max-area must be a positive number");
   if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
@@ -135,6 +141,10 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   result.mesh = std::make_unique<PatchMesh>(buildPatchMesh(result.scene));
   const double totalArea = result.mesh->totalArea();
   result.maxArea = options.maxArea > 0 ? options.maxArea : totalArea / options.targetElements;
+  // Decided before any work: bisection gives at most about 2·totalArea/maxArea elements.
+  if (totalArea / result.maxArea > kMaxElements)
+    throw InputError("about " + formatNumber(totalArea / result.maxArea) + " elements requested (limit " +
+                     std::to_string(kMaxElements) + "): raise --max-area or lower --elements");
   result.mesh->subdivideUniform(result.maxArea);
   const PatchMesh& mesh = *result.mesh;
   result.times.mesh = since(t);

@@ -52,7 +52,8 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& r, do
         {"iterations", r.iterations},
         {"measure", r.progressMeasure},
         {"final", r.finalProgress},
-        {"tolerance", options.tolerance},
+        {"tolerance", options.bounces >= 0 ? 0.0 : options.tolerance},
+        {"bounces", options.bounces >= 0 ? nlohmann::json(options.bounces) : nlohmann::json()},
         {"converged", r.converged},
         {"emitted_power", r.problem.emittedPower()}}},
       {"threads", r.threads},
@@ -72,11 +73,9 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& r, do
   };
 }
 
-}  // namespace
-
-void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
-  const auto start = std::chrono::steady_clock::now();
-  ensureDirectory(options.outputDir);
+// Writes the three files under temporary names, then renames them all.
+void writeFiles(const SolveOptions& options, SolveResult& result,
+                std::chrono::steady_clock::time_point start) {
   const std::filesystem::path dir(options.outputDir);
   const PatchMesh& mesh = *result.mesh;
 
@@ -96,10 +95,25 @@ void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
   AtomicFile summary((dir / "summary.json").string());
   summary.stream() << summaryJson(options, result, toneMap.exposure).dump(2) << "\n";
 
-  // Only now that every file is complete do they take their final names.
-  csv.commit();
-  ply.commit();
-  summary.commit();
+  // Only once every file is complete on disk do they take their final names.
+  commitAll({&csv, &ply, &summary});
+}
+
+}  // namespace
+
+void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
+  const auto start = std::chrono::steady_clock::now();
+  const bool createdDirectory = ensureDirectory(options.outputDir);
+  try {
+    writeFiles(options, result, start);
+  } catch (...) {
+    // Nothing of this run may remain: not a file, not the directory it made.
+    if (createdDirectory) {
+      std::error_code ignored;
+      std::filesystem::remove_all(options.outputDir, ignored);
+    }
+    throw;
+  }
   logInfo("wrote elements.csv, vertex_colors.ply, summary.json to " + options.outputDir);
 }
 

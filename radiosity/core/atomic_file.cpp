@@ -25,15 +25,35 @@ AtomicFile::~AtomicFile() {
   }
 }
 
-void AtomicFile::commit() {
+void AtomicFile::finish() {
+  if (finished_) return;
   out_.flush();
   const bool ok = static_cast<bool>(out_);
   out_.close();
   if (!ok || out_.fail()) throw RuntimeFailure("error while writing " + path_);
+  finished_ = true;
+}
+
+void AtomicFile::commit() {
+  finish();
   std::error_code ec;
   std::filesystem::rename(tempPath_, path_, ec);
   if (ec) throw RuntimeFailure("cannot rename " + tempPath_ + " to " + path_ + ": " + ec.message());
   committed_ = true;
+}
+
+void commitAll(const std::vector<AtomicFile*>& files) {
+  for (AtomicFile* file : files) file->finish();
+  for (AtomicFile* file : files)
+    if (std::filesystem::is_directory(file->path()))
+      throw RuntimeFailure("cannot write " + file->path() + ": a directory is in the way");
+  size_t committed = 0;
+  try {
+    for (; committed < files.size(); ++committed) files[committed]->commit();
+  } catch (...) {
+    for (size_t k = 0; k < committed; ++k) std::remove(files[k]->path().c_str());
+    throw;
+  }
 }
 
 namespace {
@@ -55,11 +75,13 @@ void AtomicPath::commit() {
   committed_ = true;
 }
 
-void ensureDirectory(const std::string& dir) {
+bool ensureDirectory(const std::string& dir) {
   std::error_code ec;
+  const bool existed = std::filesystem::exists(dir, ec);
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
     throw InputError(dir, 0, "cannot create output directory" + (ec ? ": " + ec.message() : ""));
+  return !existed;
 }
 
 }  // namespace rad

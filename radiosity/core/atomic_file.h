@@ -18,14 +18,23 @@ class AtomicFile {
 
   std::ostream& stream() { return out_; }
   const std::string& path() const { return path_; }
-  // Flushes, checks for I/O errors and renames into place. Throws RuntimeFailure on failure.
+  // Flushes, closes and checks for I/O errors (throws RuntimeFailure). Call finish() on every
+  // file of a set before commit() on any, so a set is either all renamed into place or not at all.
+  void finish();
+  // finish() if not done yet, then renames into place.
   void commit();
 
  private:
   std::string path_, tempPath_;
   std::ofstream out_;
+  bool finished_ = false;
   bool committed_ = false;
 };
+
+// Commits a set of files together: finishes all, checks that each destination can take its name,
+// then renames them; if a rename still fails, the files already renamed are removed again, so a
+// failed set leaves none of its files behind.
+void commitAll(const std::vector<AtomicFile*>& files);
 
 // For libraries that write a file by name (OpenEXR): hands out a temporary path next to the
 // destination; commit() renames it into place, destruction without commit removes it.
@@ -46,6 +55,7 @@ class AtomicPath {
 };
 
 // Creates a directory (and parents) for outputs; throws InputError naming it if that fails.
-void ensureDirectory(const std::string& dir);
+// Returns true when it did not exist before (so a failed run can remove it again).
+bool ensureDirectory(const std::string& dir);
 
 }  // namespace rad

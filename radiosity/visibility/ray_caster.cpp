@@ -19,6 +19,15 @@ void onEmbreeError(void*, RTCError code, const char* message) {
 }  // namespace
 
 RayCaster::RayCaster(const PatchMesh& mesh) {
+  try {
+    build(mesh);
+  } catch (...) {
+    release();  // the destructor does not run for a constructor that throws
+    throw;
+  }
+}
+
+void RayCaster::build(const PatchMesh& mesh) {
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw RuntimeFailure("cannot create the Embree device");
   rtcSetDeviceErrorFunction(device_, onEmbreeError, nullptr);
@@ -29,7 +38,9 @@ RayCaster::RayCaster(const PatchMesh& mesh) {
   offset_ = 1e-5 * std::max(mesh.boundsDiagonal(), std::numeric_limits<double>::min());
 
   scene_ = rtcNewScene(device_);
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);  // watertight: no rays through shared edges
+  // Robust traversal: no accuracy-reducing optimisations, so rays do not slip through the
+  // shared edges of a closed mesh.
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   const TriMesh& m = mesh.mesh();
@@ -37,7 +48,11 @@ RayCaster::RayCaster(const PatchMesh& mesh) {
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.n_vertices()));
   auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), m.n_faces()));
-  check("allocating geometry buffers");
+  if (!vertices || !indices) {
+    rtcReleaseGeometry(geometry);
+    check("allocating geometry buffers");
+    throw RuntimeFailure("allocating geometry buffers failed");
+  }
   for (int v = 0; v < mesh.vertexCount(); ++v) {
     const Eigen::Vector3d p = mesh.position(v) - centre_;
     vertices[3 * v + 0] = static_cast<float>(p.x());
@@ -55,10 +70,14 @@ RayCaster::RayCaster(const PatchMesh& mesh) {
   check("building the BVH");
 }
 
-RayCaster::~RayCaster() {
+void RayCaster::release() {
   if (scene_) rtcReleaseScene(scene_);
   if (device_) rtcReleaseDevice(device_);
+  scene_ = nullptr;
+  device_ = nullptr;
 }
+
+RayCaster::~RayCaster() { release(); }
 
 void RayCaster::check(const char* what) const {
   if (rtcGetDeviceError(device_) != RTC_ERROR_NONE || !t_lastError.empty()) {
@@ -93,11 +112,14 @@ RayHit RayCaster::closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3
   fillRay(rayHit.ray, origin - centre_, direction, maxDistance);
   rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayHit);
   RayHit result;
   if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
     result.element = static_cast<int>(rayHit.hit.primID);
     result.distance = rayHit.ray.tfar;
+    result.u = rayHit.hit.u;
+    result.v = rayHit.hit.v;
   }
   return result;
 }

@@ -12,6 +12,9 @@ namespace rad {
 struct RayHit {
   int element = -1;  // -1: the ray left the scene
   double distance = std::numeric_limits<double>::infinity();
+  // Barycentrics of the hit (Embree's hit.u, hit.v): point = (1-u-v)·c0 + u·c1 + v·c2 with c the
+  // element's corners in PatchMesh::corners() order.
+  double u = 0, v = 0;
   bool hit() const { return element >= 0; }
 };
 
@@ -26,11 +29,13 @@ class RayCaster {
   RayCaster(const RayCaster&) = delete;
   RayCaster& operator=(const RayCaster&) = delete;
 
-  // Closest element hit along origin + t·direction for t in (0, maxDistance]. `direction` need not
+  // Closest element hit along origin + t·direction for t in [0, maxDistance] (lift the origin
+  // off its surface first, see liftOff). `direction` need not
   // be normalised; distances are in units of |direction|.
   RayHit closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                     double maxDistance = std::numeric_limits<double>::infinity()) const;
-  // True when anything blocks the open segment origin → origin + maxDistance·direction.
+  // True when anything blocks origin + t·direction for t in [0, maxDistance]: pass a maxDistance
+  // slightly short of the target so the target itself does not count.
   bool occluded(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                 double maxDistance) const;
 
@@ -45,6 +50,8 @@ class RayCaster {
 
  private:
   void check(const char* what) const;
+  void build(const PatchMesh& mesh);
+  void release();
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   Eigen::Vector3d centre_;

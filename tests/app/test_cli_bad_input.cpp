@@ -84,5 +84,27 @@ TEST(BadOptions, OutputPathThatIsAFileFailsWithoutTouchingIt) {
   std::filesystem::remove(out);
 }
 
+TEST(BadOptions, AbsurdElementCountIsRejectedBeforeAnyWork) {
+  const auto out = testing::scratchPath("too_many_elements");
+  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --max-area 1e-12");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_NE(result.stderrText.find("--max-area"), std::string::npos) << result.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(PartialOutput, AFileThatCannotBeWrittenLeavesNoneOfTheOthers) {
+  // vertex_colors.ply cannot take its name (a directory is in the way): elements.csv and
+  // summary.json, though complete, must not appear either.
+  const auto out = testing::scratchPath("blocked_ply");
+  std::filesystem::create_directories(out / "vertex_colors.ply");
+  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --rays 16 --elements 50");
+  EXPECT_EQ(result.exitCode, 1) << result.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(out / "elements.csv"));
+  EXPECT_FALSE(std::filesystem::exists(out / "summary.json"));
+  for (const auto& entry : std::filesystem::directory_iterator(out))
+    EXPECT_EQ(entry.path().filename(), "vertex_colors.ply") << "left behind: " << entry.path();
+  std::filesystem::remove_all(out);
+}
+
 }  // namespace
 }  // namespace rad
