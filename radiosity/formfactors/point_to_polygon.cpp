@@ -38,8 +38,11 @@ double pointToPolygonFormFactor(const Eigen::Vector3d& p, const Eigen::Vector3d&
   double scale = 0;
   for (const auto& v : polygon) scale = std::max(scale, (v - p).norm());
   if (!(scale > 0)) return 0.0;
-  // One-sided: p must be in front of the polygon's plane.
-  if (sourceNormal.dot(p - polygon[0]) <= 1e-12 * scale) return 0.0;
+  // One-sided: p must be in front of the polygon's plane. A p in that plane (on a shared edge)
+  // counts as just in front, unless the two are coplanar, which never exchange light.
+  const double height = sourceNormal.dot(p - polygon[0]);
+  if (height < -1e-12 * scale) return 0.0;
+  if (height <= 1e-12 * scale && std::fabs(sourceNormal.dot(n)) > 1 - 1e-9) return 0.0;
 
   const std::vector<Eigen::Vector3d> visible = clipAbove(polygon, p, n, 1e-12 * scale);
   if (visible.size() < 3) return 0.0;
