@@ -19,6 +19,7 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
   mesh_.add_property(patchId_, "patch");
   mesh_.add_property(materialId_, "material");
   mesh_.add_property(level_, "level");
+  mesh_.add_property(shooterId_, "shooter");
   mesh_.add_property(area_, "area");
   mesh_.add_property(radiosity_, "B");
   mesh_.add_property(unshot_, "unshot");
@@ -60,6 +61,7 @@ void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
   mesh_.property(patchId_, f) = patch;
   mesh_.property(materialId_, f) = material;
   mesh_.property(level_, f) = 0;
+  mesh_.property(shooterId_, f) = 0;
   mesh_.property(radiosity_, f) = Eigen::Vector3d::Zero();
   mesh_.property(unshot_, f) = Eigen::Vector3d::Zero();
   updateArea(f);
@@ -96,6 +98,20 @@ Eigen::Vector3d PatchMesh::normal(int element) const {
 Eigen::Vector3d PatchMesh::centroid(int element) const {
   const auto c = corners(element);
   return (c[0] + c[1] + c[2]) / 3.0;
+}
+
+void PatchMesh::markShooters() {
+  shooterCorners_.clear();
+  for (int e = 0; e < elementCount(); ++e) {
+    mesh_.property(shooterId_, face(e)) = e;
+    shooterCorners_.push_back(corners(e));
+  }
+  shootersMarked_ = true;
+}
+
+double PatchMesh::shooterArea(int shooter) const {
+  const auto c = shooterCorners(shooter);
+  return 0.5 * (c[1] - c[0]).cross(c[2] - c[0]).norm();
 }
 
 double PatchMesh::totalArea() const {

@@ -58,6 +58,17 @@ class PatchMesh {
   Eigen::Vector3d boundsMax() const { return boundsMax_; }
   double boundsDiagonal() const { return (boundsMax_ - boundsMin_).norm(); }
 
+  // Shooting patches (substructuring): markShooters() makes every current element a shooter;
+  // elements split afterwards stay in their parent's shooter, so shooters tile the surface with
+  // triangles coarser than the elements. Before markShooters(), each element is its own shooter.
+  void markShooters();
+  int shooterCount() const { return shootersMarked_ ? static_cast<int>(shooterCorners_.size()) : elementCount(); }
+  int shooter(int element) const { return shootersMarked_ ? mesh_.property(shooterId_, face(element)) : element; }
+  std::array<Eigen::Vector3d, 3> shooterCorners(int shooter) const {
+    return shootersMarked_ ? shooterCorners_[shooter] : corners(shooter);
+  }
+  double shooterArea(int shooter) const;
+
   // Splits elements by longest-edge bisection until none is larger than maxArea. Conforming:
   // a split edge splits both faces beside it (Rivara's LEPP keeps the triangles well shaped).
   void subdivideUniform(double maxArea);
@@ -77,7 +88,9 @@ class PatchMesh {
   void updateArea(TriMesh::FaceHandle f);
 
   TriMesh mesh_;
-  OpenMesh::FPropHandleT<int> patchId_, materialId_, level_;
+  OpenMesh::FPropHandleT<int> patchId_, materialId_, level_, shooterId_;
+  std::vector<std::array<Eigen::Vector3d, 3>> shooterCorners_;
+  bool shootersMarked_ = false;
   OpenMesh::FPropHandleT<double> area_;
   OpenMesh::FPropHandleT<Eigen::Vector3d> radiosity_, unshot_;
   int patchCount_ = 0;

@@ -36,6 +36,20 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
   command.add_option("--max-iterations", options.maxIterations,
                      "Iteration budget: sweeps, bounces or shots (0: solver default)");
   command.add_option("--bounces", options.bounces, "Jacobi only: exactly N bounces of light");
+  command.add_option_function<std::string>(
+             "--form-factors",
+             [&options](const std::string& name) { options.formFactors = parseFormFactorMethod(name); },
+             "hemisphere (ray-cast rows per element) | analytic (point-to-polygon + shadow rays, "
+             "patches shoot to elements)")
+      ->check(CLI::IsMember({"hemisphere", "analytic"}));
+  command.add_option("--patch-area", options.patchArea,
+                     "analytic: largest shooting patch area (default 8 × the element area)");
+  command.add_option("--shadow-rays", options.shadowRays,
+                     "analytic: visibility rays per receiver point and patch")
+      ->default_val(options.shadowRays);
+  command.add_option("--receiver-points", options.receiverPoints,
+                     "analytic: sample points per element, 1 or 3")
+      ->default_val(options.receiverPoints);
 }
 
 void registerSolveCommand(CLI::App& app, CommandAction& run) {

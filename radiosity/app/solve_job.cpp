@@ -10,6 +10,7 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/progress.h"
+#include "radiosity/formfactors/analytic_patch_shots.h"
 #include "radiosity/formfactors/form_factor_cache.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
 #include "radiosity/scene/obj_loader.h"
@@ -67,6 +68,12 @@ std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem) {
 
 }  // namespace
 
+FormFactorMethod parseFormFactorMethod(const std::string& name) {
+  if (name == "hemisphere") return FormFactorMethod::Hemisphere;
+  if (name == "analytic") return FormFactorMethod::Analytic;
+  throw InputError("unknown form-factor method '" + name + "' (expected hemisphere or analytic)");
+}
+
 SolverKind parseSolverKind(const std::string& name) {
   if (name == "progressive") return SolverKind::Progressive;
   if (name == "southwell") return SolverKind::Southwell;
@@ -120,6 +127,12 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     throw InputError("--tolerance must be a non-negative number");
   if (options.maxIterations < 0) throw InputError("--max-iterations must be non-negative");
   if (options.threads < 0) throw InputError("--threads must be non-negative");
+  if (options.shadowRays < 1 || options.shadowRays > 4096)
+    throw InputError("--shadow-rays must be between 1 and 4096");
+  if (options.receiverPoints != 1 && options.receiverPoints != 3)
+    throw InputError("--receiver-points must be 1 or 3");
+  if (options.patchArea < 0 || !std::isfinite(options.patchArea))
+    throw InputError("--patch-area must be a positive number");
   if (options.bounces >= 0 && options.solver != SolverKind::Jacobi)
     throw InputError("--bounces applies to --solver jacobi only");
 
@@ -145,6 +158,13 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   if (totalArea / result.maxArea > kMaxElements)
     throw InputError("about " + formatNumber(totalArea / result.maxArea) + " elements requested (limit " +
                      std::to_string(kMaxElements) + "): raise --max-area or lower --elements");
+  if (options.formFactors == FormFactorMethod::Analytic) {
+    // Shooting patches first (coarser), then elements inside them.
+    const double patchArea = options.patchArea > 0 ? options.patchArea : 8 * result.maxArea;
+    if (patchArea < result.maxArea) throw InputError("--patch-area must not be below the element area");
+    result.mesh->subdivideUniform(patchArea);
+    result.mesh->markShooters();
+  }
   result.mesh->subdivideUniform(result.maxArea);
   const PatchMesh& mesh = *result.mesh;
   result.times.mesh = since(t);
@@ -158,9 +178,6 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
 
   result.problem = makeProblem(result.scene, mesh);
   const RadiosityProblem& problem = result.problem;
-  HemisphereFormFactors method(mesh, rays,
-                               {options.raysPerElement, options.seed, emitterRayMultipliers(problem)});
-  FormFactorCache cache(method);
 
   int blackElements = 0;
   for (const Rgb& rho : problem.reflectance) blackElements += rho.maxComponent() == 0;
@@ -168,21 +185,44 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     note(result, "re-shooting from " + std::to_string(blackElements) + " black elements",
          "reflectance 0: they receive light but pass none on");
 
+  // Form factors: hemisphere rows per element, or analytic element-to-patch factors with
+  // patches (coarser shooters) marked on the mesh before it is refined to elements.
+  HemisphereFormFactors method(mesh, rays,
+                               {options.raysPerElement, options.seed, emitterRayMultipliers(problem)});
+  FormFactorCache cache(method);
+  std::unique_ptr<AnalyticPatchShots> analytic;
+  if (options.formFactors == FormFactorMethod::Analytic)
+    analytic = std::make_unique<AnalyticPatchShots>(
+        mesh, rays, AnalyticOptions{options.receiverPoints, options.shadowRays, options.seed});
+  ShotRows& shots = analytic ? static_cast<ShotRows&>(*analytic) : cache;
+  result.formFactorMethod = analytic ? "analytic" : "hemisphere";
+  result.shooters = shots.shooterCount();
+
   t = Clock::now();
   std::unique_ptr<Solver> solver;
+  std::unique_ptr<GatheringColumns> columns;
   double tolerance = options.tolerance;
   int maxIterations = options.maxIterations > 0 ? options.maxIterations
                                                 : defaultMaxIterations(options.solver, mesh.elementCount());
   if (options.solver == SolverKind::Progressive) {
-    solver = std::make_unique<ProgressiveSolver>(problem, cache);
+    solver = std::make_unique<ProgressiveSolver>(problem, shots);
   } else {
-    uint64_t totalRays = 0;
-    for (int e = 0; e < mesh.elementCount(); ++e) totalRays += method.raysForRow(e);
-    Progress progress("form factors", totalRays, "rays");
-    SparseRows f = gatherMatrix(problem, cache, &progress);
-    progress.finish(std::to_string(cache.rowsComputed()) + " rows");
+    SparseRows f;
+    if (analytic) {
+      Progress progress("form factors", shots.shooterCount(), "patches");
+      f = analytic->gatheringMatrix(&progress);
+      progress.finish();
+    } else {
+      uint64_t totalRays = 0;
+      for (int e = 0; e < mesh.elementCount(); ++e) totalRays += method.raysForRow(e);
+      Progress progress("form factors", totalRays, "rays");
+      f = gatherMatrix(problem, cache, &progress);
+      progress.finish(std::to_string(cache.rowsComputed()) + " rows");
+    }
     if (options.solver == SolverKind::Southwell) {
-      solver = std::make_unique<ProgressiveSolver>(problem, f);
+      columns = std::make_unique<GatheringColumns>(problem, f);
+      solver = std::make_unique<ProgressiveSolver>(problem, *columns);
+      static_cast<ProgressiveSolver&>(*solver).setName("southwell");
     } else if (options.solver == SolverKind::Jacobi) {
       solver = std::make_unique<JacobiSolver>(problem, std::move(f));
       if (options.bounces >= 0) {
@@ -211,28 +251,26 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   progress.finish(solver->progressMeasure() + " " + formatNumber(solver->progress()) +
                   (result.converged ? "" : " (not converged)"));
   const double solveAndRows = since(t);
-  result.times.formFactors = cache.seconds();
-  result.times.solve = std::max(0.0, solveAndRows - cache.seconds());
+  result.times.formFactors = analytic ? analytic->seconds() : cache.seconds();
+  result.times.solve = std::max(0.0, solveAndRows - result.times.formFactors);
 
   result.radiosity = solver->solution();
   const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver.get());
+  const std::vector<Rgb> unshot = shooting ? shooting->unshotPowerOfElements() : std::vector<Rgb>();
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const Rgb& b = result.radiosity[e];
     result.mesh->setRadiosity(e, {b.r, b.g, b.b});
-    if (shooting) {
-      const Rgb& u = shooting->unshotPower()[e];
-      result.mesh->setUnshot(e, {u.r, u.g, u.b});
-    }
+    if (shooting) result.mesh->setUnshot(e, {unshot[e].r, unshot[e].g, unshot[e].b});
   }
   result.solverName = solver->name();
   result.progressMeasure = solver->progressMeasure();
   result.iterations = solver->iterations();
   result.finalProgress = solver->progress();
-  result.rowsComputed = cache.rowsComputed();
-  result.raysCast = cache.raysCast();
-  if (result.rowsComputed < mesh.elementCount())
-    note(result, "form-factor rows of " + std::to_string(mesh.elementCount() - result.rowsComputed) +
-                     " elements",
+  result.rowsComputed = analytic ? analytic->rowsComputed() : cache.rowsComputed();
+  result.raysCast = analytic ? analytic->raysCast() : cache.raysCast();
+  if (result.rowsComputed < result.shooters)
+    note(result, "form-factor rows of " + std::to_string(result.shooters - result.rowsComputed) +
+                     (analytic ? " patches" : " elements"),
          options.solver == SolverKind::Progressive ? "they never held unshot power worth shooting"
                                                    : "black elements pass no light on");
   if (!result.converged && options.bounces < 0)

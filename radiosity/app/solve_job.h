@@ -16,6 +16,9 @@ enum class SolverKind { Progressive, Southwell, GaussSeidel, Jacobi };
 SolverKind parseSolverKind(const std::string& name);  // throws InputError for unknown names
 std::string solverKindName(SolverKind kind);
 
+enum class FormFactorMethod { Hemisphere, Analytic };
+FormFactorMethod parseFormFactorMethod(const std::string& name);  // throws InputError
+
 struct SolveOptions {
   std::string scenePath;
   std::string outputDir;
@@ -28,6 +31,10 @@ struct SolveOptions {
   double tolerance = 1e-4;
   int maxIterations = 0;       // 0: a default per solver
   int bounces = -1;            // Jacobi only: exactly this many bounces (overrides tolerance)
+  FormFactorMethod formFactors = FormFactorMethod::Hemisphere;
+  double patchArea = 0;        // analytic: largest shooting patch (scene units²); 0: 8 × max area
+  int shadowRays = 16;         // analytic: visibility rays per receiver point and patch
+  int receiverPoints = 3;      // analytic: 1 (centroid) or 3 (Gauss points) per element
 };
 
 // Something the run decided not to do, and why (reported in the log and summary.json).
@@ -50,6 +57,8 @@ struct SolveResult {
   double finalProgress = 0;    // residual or unshot fraction reached
   bool converged = false;
   double maxArea = 0;
+  std::string formFactorMethod;
+  int shooters = 0;            // elements (hemisphere) or shooting patches (analytic)
   int rowsComputed = 0;
   uint64_t raysCast = 0;
   int threads = 0;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "radiosity/formfactors/hemisphere_form_factors.h"
+#include "radiosity/formfactors/shot_rows.h"
 
 namespace rad {
 
@@ -14,7 +15,7 @@ class Progress;
 // Rows of the form-factor matrix, computed on first use and kept. Progressive shooting asks for
 // the rows of the elements it shoots from, one at a time; the gathering solvers ask for all the
 // rows they need at once (in parallel). Either way each row is computed at most once.
-class FormFactorCache {
+class FormFactorCache : public ShotRows {
  public:
   explicit FormFactorCache(const HemisphereFormFactors& method);
 
@@ -29,6 +30,14 @@ class FormFactorCache {
   Eigen::SparseMatrix<double, Eigen::RowMajor> matrix() const;
 
   int elementCount() const { return static_cast<int>(rows_.size()); }
+
+  // Shooting from elements through their own rows: the power element i emits reaches j in the
+  // fraction F_ij of i's hemisphere row.
+  int shooterCount() const override { return elementCount(); }
+  int shooterOf(int element) const override { return element; }
+  double shooterArea(int shooter) const override { return method_.mesh().area(shooter); }
+  const FormFactorRow& powerFractions(int shooter) override { return row(shooter); }
+  std::string description() const override { return "element rows (hemisphere)"; }
   int rowsComputed() const { return rowsComputed_; }
   uint64_t raysCast() const { return raysCast_; }
   double seconds() const { return seconds_; }  // wall time spent computing rows

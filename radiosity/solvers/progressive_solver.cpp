@@ -4,18 +4,11 @@
 
 namespace rad {
 
-ProgressiveSolver::ProgressiveSolver(const RadiosityProblem& problem, FormFactorCache& cache)
-    : problem_(problem), cache_(&cache), solution_(problem.emission), unshot_(problem.size()),
+ProgressiveSolver::ProgressiveSolver(const RadiosityProblem& problem, ShotRows& shots)
+    : problem_(problem), shots_(shots), solution_(problem.emission), unshot_(shots.shooterCount()),
       emittedPower_(problem.emittedPower()) {
-  for (int i = 0; i < problem.size(); ++i) unshot_[i] = problem.emission[i] * problem.area[i];
-  updateUnshotTotals();
-}
-
-ProgressiveSolver::ProgressiveSolver(const RadiosityProblem& problem,
-                                     const Eigen::SparseMatrix<double, Eigen::RowMajor>& gatheringRows)
-    : problem_(problem), columns_(gatheringRows), solution_(problem.emission),
-      unshot_(problem.size()), emittedPower_(problem.emittedPower()) {
-  for (int i = 0; i < problem.size(); ++i) unshot_[i] = problem.emission[i] * problem.area[i];
+  for (int i = 0; i < problem.size(); ++i)
+    unshot_[shots_.shooterOf(i)] += problem.emission[i] * problem.area[i];
   updateUnshotTotals();
 }
 
@@ -25,12 +18,12 @@ void ProgressiveSolver::updateUnshotTotals() {
   CompensatedSum total;
   double best = 0;
   nextShooter_ = -1;
-  for (int i = 0; i < problem_.size(); ++i) {
-    const double power = unshot_[i].sum();
+  for (int s = 0; s < static_cast<int>(unshot_.size()); ++s) {
+    const double power = unshot_[s].sum();
     total += power;
     if (power > best) {
       best = power;
-      nextShooter_ = i;
+      nextShooter_ = s;
     }
   }
   unshotFraction_ = emittedPower_ > 0 ? total.value() / emittedPower_ : 0.0;
@@ -41,32 +34,26 @@ void ProgressiveSolver::step() {
   const int shooter = nextShooter_;
   const Rgb power = unshot_[shooter];
   unshot_[shooter] = Rgb();
-  // Power arriving at j is power·F_shooter,j (lazy) or, by reciprocity, power·A_j F_j,shooter /
-  // A_shooter (columns); j reflects rho_j of it, spread over its area.
-  auto receive = [&](int j, double fraction) {
-    const Rgb reflected = problem_.reflectance[j] * (power * fraction);
+  const FormFactorRow& row = shots_.powerFractions(shooter);
+  for (size_t k = 0; k < row.targets.size(); ++k) {
+    const int j = row.targets[k];
+    // j receives power·fraction, reflects rho_j of it, spread over its area; what it reflects is
+    // unshot power of j's shooter.
+    const Rgb reflected = problem_.reflectance[j] * (power * row.values[k]);
     solution_[j] += reflected / problem_.area[j];
-    unshot_[j] += reflected;
-  };
-  if (cache_) {
-    const FormFactorRow& row = cache_->row(shooter);
-    for (size_t k = 0; k < row.targets.size(); ++k) receive(row.targets[k], row.values[k]);
-  } else {
-    const double perArea = 1.0 / problem_.area[shooter];
-    for (Eigen::SparseMatrix<double>::InnerIterator it(columns_, shooter); it; ++it)
-      receive(static_cast<int>(it.row()), it.value() * problem_.area[it.row()] * perArea);
+    unshot_[shots_.shooterOf(j)] += reflected;
   }
   lastShooter_ = shooter;
-  ++shots_;
+  ++shotCount_;
   updateUnshotTotals();
 }
 
 std::vector<Rgb> ProgressiveSolver::withAmbient() const {
   CompensatedSum areaSum;
   Rgb unshotSum, rhoSum;
+  for (const Rgb& u : unshot_) unshotSum += u;
   for (int i = 0; i < problem_.size(); ++i) {
     areaSum += problem_.area[i];
-    unshotSum += unshot_[i];
     rhoSum += problem_.reflectance[i] * problem_.area[i];
   }
   const double totalArea = areaSum.value();
@@ -79,6 +66,27 @@ std::vector<Rgb> ProgressiveSolver::withAmbient() const {
   }
   for (int i = 0; i < problem_.size(); ++i) out[i] += problem_.reflectance[i] * ambient;
   return out;
+}
+
+std::vector<Rgb> ProgressiveSolver::unshotPowerOfElements() const {
+  std::vector<Rgb> out(problem_.size());
+  for (int i = 0; i < problem_.size(); ++i) {
+    const int s = shots_.shooterOf(i);
+    out[i] = unshot_[s] * (problem_.area[i] / shots_.shooterArea(s));
+  }
+  return out;
+}
+
+GatheringColumns::GatheringColumns(const RadiosityProblem& problem,
+                                   const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows)
+    : area_(problem.area), columns_(problem.size()) {
+  // Row-major iteration visits (j, i) with j increasing, so each column comes out sorted by j.
+  for (int j = 0; j < rows.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(rows, j); it; ++it) {
+      const int i = static_cast<int>(it.col());
+      columns_[i].targets.push_back(j);
+      columns_[i].values.push_back(it.value() * area_[j] / area_[i]);
+    }
 }
 
 }  // namespace rad

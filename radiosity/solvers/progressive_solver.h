@@ -2,54 +2,68 @@
 
 #include <Eigen/SparseCore>
 
-#include "radiosity/formfactors/form_factor_cache.h"
+#include "radiosity/formfactors/shot_rows.h"
 #include "radiosity/solvers/radiosity_problem.h"
 #include "radiosity/solvers/solver.h"
 
 namespace rad {
 
 // Progressive refinement (Cohen, Chen, Wallace, Greenberg 1988): each step shoots the unshot
-// power of the element holding the most. The ambient term estimates the light not yet shot,
-// for display.
-//
-// Two sources for the shot, which differ only through Monte Carlo noise:
-// - lazy (the default): the shooter's own hemisphere row F_ij, computed only when it first
-//   shoots; power U_i·F_ij reaches j. Black elements never gain unshot power, so they never
-//   shoot and their rows are never computed. Because the estimated F is not exactly reciprocal,
-//   this converges to the solution of B_j = E_j + rho_j sum_i (A_i F_ij / A_j) B_i, which equals
-//   the gathering solution only up to the form factors' noise.
-// - columns (Southwell iteration): given every gathering row up front, the shot from i uses the
-//   column F_ji, so it converges to exactly the system Jacobi and Gauss–Seidel solve.
+// power of the shooter holding the most. Shooters and where their power lands come from a
+// ShotRows: elements through their own hemisphere rows (computed on first shot; black elements
+// never gain unshot power, so they never shoot and their rows are never computed), patches through
+// analytic element-to-patch form factors (substructuring: patches shoot, elements receive), or
+// the columns of the full gathering matrix (Southwell iteration: the very system Jacobi and
+// Gauss–Seidel solve). With hemisphere rows, the estimated F is not exactly reciprocal, so
+// shooting converges to B_j = E_j + rho_j sum_i (A_i F_ij / A_j) B_i: the gathering solution up
+// to the form factors' noise. The ambient term estimates the light not yet shot, for display.
 class ProgressiveSolver : public Solver {
  public:
-  ProgressiveSolver(const RadiosityProblem& problem, FormFactorCache& cache);
-  ProgressiveSolver(const RadiosityProblem& problem, const Eigen::SparseMatrix<double, Eigen::RowMajor>& gatheringRows);
-  std::string name() const override { return cache_ ? "progressive" : "southwell"; }
+  ProgressiveSolver(const RadiosityProblem& problem, ShotRows& shots);
+  std::string name() const override { return name_; }
   void step() override;
   double progress() const override { return unshotFraction_; }
   const std::vector<Rgb>& solution() const override { return solution_; }
-  int iterations() const override { return shots_; }
+  int iterations() const override { return shotCount_; }
   std::string progressMeasure() const override { return "unshot power / emitted power"; }
 
   // B_i + rho_i · ambient, with ambient = R · (area-weighted mean unshot radiosity) and
   // R = 1 / (1 − area-weighted mean rho), per channel: an image that is roughly right from the
   // first shot on. Not part of solution(), which holds only light actually transported.
   std::vector<Rgb> withAmbient() const;
-  const std::vector<Rgb>& unshotPower() const { return unshot_; }  // W per channel
+  // Unshot power per element (W): each shooter's share, spread over its elements by area.
+  std::vector<Rgb> unshotPowerOfElements() const;
   int lastShooter() const { return lastShooter_; }
+  void setName(std::string name) { name_ = std::move(name); }
 
  private:
   void updateUnshotTotals();
   const RadiosityProblem& problem_;
-  FormFactorCache* cache_ = nullptr;
-  Eigen::SparseMatrix<double, Eigen::ColMajor> columns_;
+  ShotRows& shots_;
+  std::string name_ = "progressive";
   std::vector<Rgb> solution_;
-  std::vector<Rgb> unshot_;
-  int shots_ = 0;
+  std::vector<Rgb> unshot_;  // per shooter, W
+  int shotCount_ = 0;
   int lastShooter_ = -1;
   int nextShooter_ = -1;
   double unshotFraction_ = 0;
   double emittedPower_;
+};
+
+// Southwell iteration as shooting: shooters are elements, and the power of i reaches j in the
+// fraction A_j F_ji / A_i read from column i of the gathering matrix (all rows computed first).
+class GatheringColumns : public ShotRows {
+ public:
+  GatheringColumns(const RadiosityProblem& problem, const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows);
+  int shooterCount() const override { return static_cast<int>(area_.size()); }
+  int shooterOf(int element) const override { return element; }
+  double shooterArea(int shooter) const override { return area_[shooter]; }
+  const FormFactorRow& powerFractions(int shooter) override { return columns_[shooter]; }
+  std::string description() const override { return "columns of the gathering matrix"; }
+
+ private:
+  std::vector<double> area_;
+  std::vector<FormFactorRow> columns_;
 };
 
 }  // namespace rad

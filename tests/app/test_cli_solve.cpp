@@ -86,6 +86,21 @@ TEST(CliSolve, SameSeedGivesByteIdenticalCsvAndOtherSeedDiffers) {
   EXPECT_NE(a, c);
 }
 
+TEST(CliSolve, AnalyticFormFactorsShootFromPatchesToElements) {
+  const auto out = testing::scratchPath("cornell_analytic");
+  const auto r = testing::runRadiosity("solve " + kData + "/cornell_box/cornell_box.obj --out " + out.string() +
+                                       " --form-factors analytic --elements 300 --shadow-rays 4");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  std::ifstream summaryFile(out / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(summaryFile);
+  EXPECT_EQ(summary["form_factors"]["method"], "analytic");
+  const int shooters = summary["form_factors"]["shooters"], elements = summary["scene"]["elements"];
+  EXPECT_GT(shooters, 17);
+  EXPECT_LT(shooters * 4, elements);  // patches are coarser than the elements they contain
+  EXPECT_TRUE(summary["solver"]["converged"]);
+  std::filesystem::remove_all(out);
+}
+
 TEST(CliSolve, JacobiBouncesInTheFurnaceBox) {
   // Furnace box: rho = 0.5, Ke = 1, so E = pi and after k bounces B = pi (1 − 0.5^(k+1)) / 0.5.
   const auto out = testing::scratchPath("furnace_bounces");

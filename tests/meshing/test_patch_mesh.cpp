@@ -95,3 +95,38 @@ TEST(PolygonTriangulation, NonConvexPolygonKeepsArea) {
 
 }  // namespace
 }  // namespace rad
+
+namespace rad {
+namespace {
+
+TEST(PatchMesh, ShootersTileTheSurfaceAndContainTheirElements) {
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
+  PatchMesh mesh(p, {{{0, 1, 2, 3}, 0}});
+  EXPECT_EQ(mesh.shooterCount(), mesh.elementCount());  // unmarked: one shooter per element
+  mesh.subdivideUniform(0.25);
+  mesh.markShooters();
+  const int shooters = mesh.shooterCount();
+  mesh.subdivideUniform(0.25 / 8);
+  EXPECT_EQ(mesh.shooterCount(), shooters);
+  EXPECT_GT(mesh.elementCount(), 4 * shooters);
+  std::vector<double> covered(shooters, 0);
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const int s = mesh.shooter(e);
+    covered[s] += mesh.area(e);
+    // The element's centroid lies inside its shooter's triangle (barycentric test).
+    const auto c = mesh.shooterCorners(s);
+    const Eigen::Vector3d q = mesh.centroid(e);
+    const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_GE((c[(k + 1) % 3] - c[k]).cross(q - c[k]).dot(n), -1e-12);
+  }
+  double total = 0;
+  for (int s = 0; s < shooters; ++s) {
+    EXPECT_NEAR(covered[s], mesh.shooterArea(s), 1e-12);
+    total += mesh.shooterArea(s);
+  }
+  EXPECT_NEAR(total, 2.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace rad

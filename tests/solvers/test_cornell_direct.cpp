@@ -80,7 +80,8 @@ TEST_F(CornellDirect, JacobiAgrees) {
 
 TEST_F(CornellDirect, SouthwellShootingAgrees) {
   const double tolerance = 1e-6;
-  ProgressiveSolver solver(*problem_, *f_);
+  GatheringColumns columns(*problem_, *f_);
+  ProgressiveSolver solver(*problem_, columns);
   run(solver, tolerance);
   // Unshot power U still owed at most U·rho_max/(1 − rho_max) to the solution.
   EXPECT_LT(relativeDifference(solver.solution()), tolerance * maxReflectance() / (1 - maxReflectance()));

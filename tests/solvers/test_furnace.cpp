@@ -47,8 +47,9 @@ TEST_P(FurnaceTest, ConvergesToEOverOneMinusRho) {
   std::unique_ptr<Solver> solver;
   double tolerance;
   SparseRows f = gatherMatrix(furnace.problem, furnace.cache);
+  GatheringColumns columns(furnace.problem, f);
   if (solverName == "southwell") {
-    solver = std::make_unique<ProgressiveSolver>(furnace.problem, f);
+    solver = std::make_unique<ProgressiveSolver>(furnace.problem, columns);
     tolerance = 1e-5;  // missing radiosity = rho × unshot fraction (relative)
   } else {
     if (solverName == "jacobi") solver = std::make_unique<JacobiSolver>(furnace.problem, f);

@@ -1,0 +1,134 @@
+#include "radiosity/formfactors/analytic_patch_shots.h"
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Geometry>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "radiosity/core/progress.h"
+#include "radiosity/core/rng.h"
+#include "radiosity/formfactors/hemisphere_sampling.h"
+#include "radiosity/formfactors/point_to_polygon.h"
+
+namespace rad {
+namespace {
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+}  // namespace
+
+AnalyticPatchShots::AnalyticPatchShots(const PatchMesh& mesh, const RayCaster& rays,
+                                       AnalyticOptions options)
+    : mesh_(mesh), rays_(rays), options_(options), rows_(mesh.shooterCount()),
+      partlyShadowed_(mesh.elementCount(), 0) {
+  if (options_.receiverPoints != 1 && options_.receiverPoints != 3)
+    throw std::invalid_argument("receiver points must be 1 or 3");
+  if (options_.shadowRays < 1) throw std::invalid_argument("shadow rays must be >= 1");
+  const int n = mesh.elementCount();
+  normals_.resize(n);
+  centroids_.resize(n);
+  receiverPoints_.resize(n);
+  for (int e = 0; e < n; ++e) {
+    const auto c = mesh.corners(e);
+    normals_[e] = mesh.normal(e);
+    centroids_[e] = (c[0] + c[1] + c[2]) / 3.0;
+    // Degree-2 Gauss points (barycentric 2/3, 1/6, 1/6): interior, so never on a shared edge.
+    for (int k = 0; k < 3; ++k)
+      receiverPoints_[e][k] = (4.0 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6.0;
+  }
+  for (int s = 0; s < mesh.shooterCount(); ++s) {
+    const auto c = mesh.shooterCorners(s);
+    const Eigen::Vector3d cross = (c[1] - c[0]).cross(c[2] - c[0]);
+    shooterArea_.push_back(0.5 * cross.norm());
+    shooterNormal_.push_back(cross.normalized());
+  }
+}
+
+double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
+  if (mesh_.shooter(receiver) == shooter) return 0.0;
+  const auto source = mesh_.shooterCorners(shooter);
+  const Eigen::Vector3d& n = normals_[receiver];
+  const Eigen::Vector3d& ns = shooterNormal_[shooter];
+  const auto receiverCorners = mesh_.corners(receiver);
+  const double scale = rays_.surfaceOffset();
+  // No rays for pairs that cannot exchange light.
+  bool sourceAbove = false, receiverInFront = false;
+  for (const auto& v : source) sourceAbove |= n.dot(v - centroids_[receiver]) > scale;
+  for (const auto& v : receiverCorners) receiverInFront |= ns.dot(v - source[0]) > scale;
+  if (!sourceAbove || !receiverInFront) return 0.0;
+
+  const std::vector<Eigen::Vector3d> polygon(source.begin(), source.end());
+  const int points = options_.receiverPoints;
+  const int m = options_.shadowRays;
+  const int g = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(m))));
+  Rng rng(streamKey(options_.seed, static_cast<uint64_t>(receiver), static_cast<uint64_t>(shooter)));
+  double sum = 0;
+  bool partial = false;
+  for (int k = 0; k < points; ++k) {
+    const Eigen::Vector3d x = points == 1 ? centroids_[receiver] : receiverPoints_[receiver][k];
+    const double unoccluded = pointToPolygonFormFactor(x, n, polygon);
+    if (unoccluded <= 0) continue;
+    const Eigen::Vector3d origin = x + scale * n;
+    int visible = 0;
+    for (int r = 0; r < m; ++r) {
+      double u = rng.uniform(), v = rng.uniform();
+      if (r < g * g) {  // stratified over the shooter
+        u = ((r % g) + u) / g;
+        v = ((r / g) + v) / g;
+      }
+      const Eigen::Vector3d target = uniformPointOnTriangle(source, u, v) + scale * ns;
+      if (!rays_.occluded(origin, target - origin, 1.0 - 1e-6)) ++visible;
+    }
+    raysCast_ += m;
+    if (visible > 0 && visible < m) partial = true;
+    sum += unoccluded * visible / m;
+  }
+  if (partial) partlyShadowed_[receiver] = 1;  // benign race: every writer stores 1
+  return sum / points;
+}
+
+const FormFactorRow& AnalyticPatchShots::powerFractions(int shooter) {
+  if (!rows_[shooter]) {
+    const auto start = std::chrono::steady_clock::now();
+    const int n = mesh_.elementCount();
+    std::vector<double> fraction(n, 0.0);
+    tbb::parallel_for(tbb::blocked_range<int>(0, n, 16), [&](const tbb::blocked_range<int>& r) {
+      for (int j = r.begin(); j != r.end(); ++j)
+        fraction[j] = elementToShooter(j, shooter) * mesh_.area(j) / shooterArea_[shooter];
+    });
+    auto row = std::make_unique<FormFactorRow>();
+    for (int j = 0; j < n; ++j)
+      if (fraction[j] > 0) {
+        row->targets.push_back(j);
+        row->values.push_back(fraction[j]);
+      }
+    row->escaped = std::max(0.0, 1.0 - row->sum());
+    rows_[shooter] = std::move(row);
+    ++rowsComputed_;
+    seconds_ += secondsSince(start);
+  }
+  return *rows_[shooter];
+}
+
+Eigen::SparseMatrix<double, Eigen::RowMajor> AnalyticPatchShots::gatheringMatrix(Progress* progress) {
+  std::vector<std::vector<int>> elementsOf(shooterCount());
+  for (int e = 0; e < mesh_.elementCount(); ++e) elementsOf[mesh_.shooter(e)].push_back(e);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int s = 0; s < shooterCount(); ++s) {
+    const FormFactorRow& row = powerFractions(s);
+    // fraction_j = A_j F_js / A_s, and F_je = F_js A_e / A_s, so F_je = fraction_j A_e / A_j.
+    for (size_t k = 0; k < row.targets.size(); ++k) {
+      const int j = row.targets[k];
+      for (int e : elementsOf[s])
+        entries.emplace_back(j, e, row.values[k] * mesh_.area(e) / mesh_.area(j));
+    }
+    if (progress) progress->advance(1);
+  }
+  Eigen::SparseMatrix<double, Eigen::RowMajor> f(mesh_.elementCount(), mesh_.elementCount());
+  f.setFromTriplets(entries.begin(), entries.end());
+  return f;
+}
+
+}  // namespace rad

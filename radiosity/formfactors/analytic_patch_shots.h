@@ -1,0 +1,73 @@
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "meshing/patch_mesh.h"
+#include "radiosity/formfactors/shot_rows.h"
+#include "radiosity/visibility/ray_caster.h"
+
+namespace rad {
+
+class Progress;
+
+struct AnalyticOptions {
+  int receiverPoints = 3;  // 1: the centroid; 3: the degree-2 Gauss points of the triangle
+  int shadowRays = 16;     // per receiver point and shooter, stratified over the shooter
+  uint64_t seed = 1;
+};
+
+// Element-to-patch form factors in the manner of Wallace, Elmquist and Haines (1989): at sample
+// points x of the receiving element, the exact point-to-polygon form factor to the shooting
+// patch (Lambert/Nusselt), times the fraction of shadow rays from x to stratified points of the
+// patch that arrive unblocked. Patches shoot, elements receive (substructuring, Cohen et al.
+// 1986): the shooters are PatchMesh's shooting patches, coarser than the elements.
+//
+// Pairs that cannot exchange light get no rays: a patch entirely behind the receiver's plane,
+// a receiver entirely behind the patch's plane (emitters and receivers are one-sided), coplanar
+// pairs. Shadow-ray points come from a stream keyed by (seed, receiver, shooter), so results do
+// not depend on thread count or on the order rows are computed.
+class AnalyticPatchShots : public ShotRows {
+ public:
+  AnalyticPatchShots(const PatchMesh& mesh, const RayCaster& rays, AnalyticOptions options);
+
+  // F from element `receiver` to shooting patch `shooter`, visibility included.
+  double elementToShooter(int receiver, int shooter) const;
+
+  int shooterCount() const override { return mesh_.shooterCount(); }
+  int shooterOf(int element) const override { return mesh_.shooter(element); }
+  double shooterArea(int shooter) const override { return shooterArea_[shooter]; }
+  // Fractions A_j F_js / A_s of the power of shooter s that land on each element j (reciprocity),
+  // computed on the first request in parallel over the receivers, then kept.
+  const FormFactorRow& powerFractions(int shooter) override;
+  std::string description() const override { return "patches to elements (analytic, shadow rays)"; }
+
+  // Element-to-element gathering matrix for Jacobi / Gauss–Seidel: F_ie = F_i,s(e) · A_e / A_s(e),
+  // i.e. element i gathers the area-weighted radiosity of each patch. Computes every row.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> gatheringMatrix(Progress* progress = nullptr);
+
+  uint64_t raysCast() const { return raysCast_.load(); }
+  int rowsComputed() const { return rowsComputed_; }
+  double seconds() const { return seconds_; }
+  // Elements that saw some shooter only partly (a shadow boundary crosses them).
+  const std::vector<char>& partlyShadowed() const { return partlyShadowed_; }
+
+ private:
+  const PatchMesh& mesh_;
+  const RayCaster& rays_;
+  AnalyticOptions options_;
+  std::vector<Eigen::Vector3d> normals_, centroids_;
+  std::vector<std::array<Eigen::Vector3d, 3>> receiverPoints_;
+  std::vector<double> shooterArea_;
+  std::vector<Eigen::Vector3d> shooterNormal_;
+  std::vector<std::unique_ptr<FormFactorRow>> rows_;
+  mutable std::atomic<uint64_t> raysCast_{0};
+  mutable std::vector<char> partlyShadowed_;
+  int rowsComputed_ = 0;
+  double seconds_ = 0;
+};
+
+}  // namespace rad

@@ -1,0 +1,123 @@
+// Element-to-patch form factors (point-to-polygon + shadow rays) against Howell's catalogue.
+#include <gtest/gtest.h>
+
+#include "radiosity/formfactors/analytic_patch_shots.h"
+#include "tests/support/analytic_form_factors.h"
+
+namespace rad {
+namespace {
+
+// Area-weighted patch-to-patch factor from element-to-shooter factors: F_PQ = Σ_{e∈P} A_e F_eQ / A_P,
+// where Q is the union of the shooters of input polygon `to`.
+double patchToPatch(const PatchMesh& mesh, const AnalyticPatchShots& shots, int from, int to) {
+  std::vector<int> targetShooters;
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    if (mesh.patch(e) == to) targetShooters.push_back(mesh.shooter(e));
+  std::sort(targetShooters.begin(), targetShooters.end());
+  targetShooters.erase(std::unique(targetShooters.begin(), targetShooters.end()), targetShooters.end());
+  double sum = 0;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    if (mesh.patch(e) != from) continue;
+    for (int s : targetShooters) sum += mesh.area(e) * shots.elementToShooter(e, s);
+  }
+  return sum / mesh.patchArea(from);
+}
+
+PatchMesh meshed(std::vector<Eigen::Vector3d> p, std::vector<PatchPolygon> polygons, double patchArea,
+                 double elementArea) {
+  PatchMesh mesh(p, polygons);
+  mesh.subdivideUniform(patchArea);
+  mesh.markShooters();
+  mesh.subdivideUniform(elementArea);
+  return mesh;
+}
+
+TEST(AnalyticPatchShots, ParallelSquaresWithinHalfAPercent) {
+  const PatchMesh mesh = meshed({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                                {{{0, 1, 2, 3}, 0}, {{4, 7, 6, 5}, 1}}, 0.1, 0.01);
+  RayCaster rays(mesh);
+  AnalyticPatchShots shots(mesh, rays, {3, 4, 1});
+  EXPECT_NEAR(patchToPatch(mesh, shots, 0, 1), 0.199825, 0.005 * 0.199825);
+}
+
+TEST(AnalyticPatchShots, PerpendicularSquaresSharingAnEdgeWithinHalfAPercent) {
+  const PatchMesh mesh = meshed({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 1}, {0, 0, 1}},
+                                {{{0, 1, 2, 3}, 0}, {{1, 0, 5, 4}, 1}}, 0.1, 0.005);
+  RayCaster rays(mesh);
+  AnalyticPatchShots shots(mesh, rays, {3, 4, 1});
+  const double exact = reference::perpendicularRectangles(1, 1, 1);
+  EXPECT_NEAR(patchToPatch(mesh, shots, 0, 1), exact, 0.005 * exact);
+  EXPECT_NEAR(patchToPatch(mesh, shots, 1, 0), exact, 0.005 * exact);
+}
+
+TEST(AnalyticPatchShots, PowerFractionsAreReciprocalToTheReceiverFactors) {
+  const PatchMesh mesh = meshed({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                                {{{0, 1, 2, 3}, 0}, {{4, 7, 6, 5}, 1}}, 0.2, 0.05);
+  RayCaster rays(mesh);
+  AnalyticPatchShots shots(mesh, rays, {1, 4, 1});
+  const int s = mesh.shooter(mesh.elementCount() - 1);
+  const FormFactorRow& row = shots.powerFractions(s);
+  ASSERT_FALSE(row.targets.empty());
+  for (size_t k = 0; k < row.targets.size(); ++k) {
+    const int j = row.targets[k];
+    EXPECT_NEAR(row.values[k], mesh.area(j) * shots.elementToShooter(j, s) / mesh.shooterArea(s), 1e-15);
+  }
+  // A shooter sends nothing to its own elements.
+  for (int j : row.targets) EXPECT_NE(mesh.shooter(j), s);
+}
+
+TEST(AnalyticPatchShots, BlockerReducesTheFactorAndMarksThePartialShadow) {
+  // Receiver at z = 0 facing up, source at z = 2 facing down, and between them at z = 1 an opaque
+  // plate covering x < 0.5 of the source's footprint: part of the exchange is blocked, none of it
+  // is gained, and the receivers under the plate's edge see the source only in part.
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                    {0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2},
+                                    {-5, -5, 1}, {0.5, -5, 1}, {0.5, 5, 1}, {-5, 5, 1}};
+  std::vector<PatchPolygon> polygons = {{{0, 1, 2, 3}, 0}, {{4, 7, 6, 5}, 1}, {{8, 11, 10, 9}, 2}};
+  const PatchMesh blocked = meshed(p, polygons, 10, 0.05);
+  const PatchMesh open = meshed(p, {polygons[0], polygons[1]}, 10, 0.05);
+  RayCaster blockedRays(blocked), openRays(open);
+  AnalyticPatchShots withBlocker(blocked, blockedRays, {3, 64, 1}), without(open, openRays, {3, 64, 1});
+  const double a = patchToPatch(blocked, withBlocker, 0, 1), b = patchToPatch(open, without, 0, 1);
+  EXPECT_GT(a, 0.1 * b);
+  EXPECT_LT(a, 0.9 * b);
+  int partial = 0;
+  for (int e = 0; e < blocked.elementCount(); ++e) partial += blocked.patch(e) == 0 && withBlocker.partlyShadowed()[e];
+  EXPECT_GT(partial, 0);
+  for (int e = 0; e < open.elementCount(); ++e) EXPECT_FALSE(without.partlyShadowed()[e]);
+}
+
+TEST(AnalyticPatchShots, BackToBackPairsGetNoRays) {
+  // Two squares facing away from each other: no energy, and not a single ray spent.
+  const PatchMesh mesh = meshed({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                                {{{0, 3, 2, 1}, 0}, {{4, 5, 6, 7}, 1}}, 0.25, 0.1);
+  RayCaster rays(mesh);
+  AnalyticPatchShots shots(mesh, rays, {3, 16, 1});
+  for (int s = 0; s < mesh.shooterCount(); ++s) EXPECT_TRUE(shots.powerFractions(s).targets.empty());
+  EXPECT_EQ(shots.raysCast(), 0u);
+}
+
+TEST(AnalyticPatchShots, RowsOfAClosedBoxSumToOneWithinTheQuadratureError) {
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                    {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  const PatchMesh mesh = meshed(p,
+                                {{{0, 1, 2, 3}, 0}, {{4, 7, 6, 5}, 0}, {{0, 4, 5, 1}, 0},
+                                 {{3, 2, 6, 7}, 0}, {{0, 3, 7, 4}, 0}, {{1, 5, 6, 2}, 0}},
+                                0.1, 0.02);
+  RayCaster rays(mesh);
+  AnalyticPatchShots shots(mesh, rays, {3, 4, 1});
+  const auto f = shots.gatheringMatrix();
+  double worst = 0, mean = 0;
+  for (int i = 0; i < f.rows(); ++i) {
+    const double sum = f.row(i).sum();
+    worst = std::max(worst, std::fabs(sum - 1));
+    mean += sum / f.rows();
+  }
+  // Every element sees the whole inside of the box; only the 3-point rule's error remains,
+  // largest for elements in a corner.
+  EXPECT_NEAR(mean, 1.0, 0.005);
+  EXPECT_LT(worst, 0.05);
+}
+
+}  // namespace
+}  // namespace rad
