@@ -92,6 +92,17 @@ std::string solverKindName(SolverKind kind) {
   return "?";
 }
 
+std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMesh& mesh) {
+  std::vector<SpecularSurface> surfaces(mesh.elementCount());
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const Material& m = scene.materials[mesh.material(e)];
+    if (m.kind == SurfaceKind::Mirror) surfaces[e] = {SpecularSurface::Kind::Mirror, m.specular, Rgb::all(1), 1};
+    if (m.kind == SurfaceKind::Dielectric)
+      surfaces[e] = {SpecularSurface::Kind::Dielectric, Rgb::all(1), m.transmittance, m.ior};
+  }
+  return surfaces;
+}
+
 RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
   RadiosityProblem problem;
   const int n = mesh.elementCount();
@@ -101,7 +112,8 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
   for (int e = 0; e < n; ++e) {
     const Material& m = scene.materials[mesh.material(e)];
     problem.emission[e] = M_PI * m.emission;  // Lambertian emitter: exitance = pi × radiance
-    problem.reflectance[e] = m.diffuse;
+    // Mirrors and glass hold no radiosity: rays pass on through them (extended form factors).
+    problem.reflectance[e] = m.isSpecular() ? Rgb() : m.diffuse;
     problem.area[e] = mesh.area(e);
   }
   return problem;
@@ -144,11 +156,12 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
 
   result.scene = std::move(scene);
   requireEmitter(result.scene);
-  if (!result.scene.hasSpecular())
+  const bool specular = result.scene.hasSpecular();
+  if (!specular)
     note(result, "specular continuation", "the scene has no mirror or glass material");
-  else
-    logWarning("mirror/glass materials are treated as diffuse (Kd) by the radiosity pass: "
-               "extended form factors are not implemented yet");
+  else if (options.formFactors == FormFactorMethod::Analytic)
+    logWarning("analytic form factors do not follow mirrors and glass: they absorb light in this "
+               "pass; use --form-factors hemisphere for light carried through them");
 
   auto t = Clock::now();
   result.mesh = std::make_unique<PatchMesh>(buildPatchMesh(result.scene));
@@ -180,7 +193,9 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   const RadiosityProblem& problem = result.problem;
 
   int blackElements = 0;
-  for (const Rgb& rho : problem.reflectance) blackElements += rho.maxComponent() == 0;
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    blackElements += problem.reflectance[e].maxComponent() == 0 &&
+                     !result.scene.materials[mesh.material(e)].isSpecular();
   if (blackElements > 0)
     note(result, "re-shooting from " + std::to_string(blackElements) + " black elements",
          "reflectance 0: they receive light but pass none on");
@@ -188,7 +203,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   // Form factors: hemisphere rows per element, or analytic element-to-patch factors with
   // patches (coarser shooters) marked on the mesh before it is refined to elements.
   HemisphereFormFactors method(mesh, rays,
-                               {options.raysPerElement, options.seed, emitterRayMultipliers(problem)});
+                               {options.raysPerElement, options.seed, emitterRayMultipliers(problem),
+                                specular ? specularSurfaces(result.scene, mesh) : std::vector<SpecularSurface>()});
   FormFactorCache cache(method);
   std::unique_ptr<AnalyticPatchShots> analytic;
   if (options.formFactors == FormFactorMethod::Analytic)
@@ -267,7 +283,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   result.iterations = solver->iterations();
   result.finalProgress = solver->progress();
   result.rowsComputed = analytic ? analytic->rowsComputed() : cache.rowsComputed();
-  result.raysCast = analytic ? analytic->raysCast() : cache.raysCast();
+  result.raysCast = analytic ? analytic->raysCast() : cache.raysCast() + method.specularRays();
+  result.specularRays = analytic ? 0 : method.specularRays();
   if (result.rowsComputed < result.shooters)
     note(result, "form-factor rows of " + std::to_string(result.shooters - result.rowsComputed) +
                      (analytic ? " patches" : " elements"),

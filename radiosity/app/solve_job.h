@@ -7,6 +7,7 @@
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/core/rgb.h"
+#include "radiosity/formfactors/specular_paths.h"
 #include "radiosity/scene/scene.h"
 #include "radiosity/solvers/radiosity_problem.h"
 
@@ -60,6 +61,7 @@ struct SolveResult {
   std::string formFactorMethod;
   int shooters = 0;            // elements (hemisphere) or shooting patches (analytic)
   int rowsComputed = 0;
+  uint64_t specularRays = 0;   // continuations through mirrors and glass
   uint64_t raysCast = 0;
   int threads = 0;
   StageTimes times;
@@ -71,7 +73,11 @@ SolveResult runSolve(const SolveOptions& options);
 // Meshes, computes form factors and solves an already loaded scene (options.scenePath unused).
 SolveResult solveScene(Scene scene, const SolveOptions& options);
 
-// The per-element problem of a meshed scene: E = pi·Ke on emitters, rho = Kd.
+// Mirror and glass behaviour per element for extended form factors.
+std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMesh& mesh);
+
+// The per-element problem of a meshed scene: E = pi·Ke on emitters, rho = Kd (0 on mirrors
+// and glass, which hold no radiosity).
 RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh);
 
 // Writes elements.csv, vertex_colors.ply and summary.json into options.outputDir. Every file is

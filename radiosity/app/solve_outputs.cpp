@@ -46,6 +46,7 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& r, do
         {"rays_per_element", options.raysPerElement},
         {"rows_computed", r.rowsComputed},
         {"rays_cast", r.raysCast},
+        {"specular_rays", r.specularRays},
         {"rays_per_second", rayTime > 0 ? r.raysCast / rayTime : 0.0},
         {"seed", options.seed}}},
       {"solver",

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
+#include <stdexcept>
 
 #include "radiosity/core/progress.h"
 
@@ -45,6 +46,11 @@ void FormFactorCache::computeRows(const std::vector<bool>& needed, Progress* pro
 }
 
 Eigen::SparseMatrix<double, Eigen::RowMajor> FormFactorCache::matrix() const {
+  for (const auto& row : rows_)
+    if (row && !row->tinted.empty())
+      throw std::invalid_argument(
+          "form factors through mirrors or glass are tinted per channel; the gathering solvers "
+          "use one matrix for all channels: use --solver progressive for this scene");
   std::vector<Eigen::Triplet<double>> entries;
   for (int i = 0; i < elementCount(); ++i)
     if (rows_[i])

@@ -2,15 +2,25 @@
 
 #include <vector>
 
+#include "radiosity/core/rgb.h"
+
 namespace rad {
 
 // The non-zero form factors F_ij from one element i to the elements j it reaches, sorted by j.
 // `escaped` is the part of i's hemisphere that reached no front face (open scene, back faces):
 // with it, the row sums to 1.
+//
+// Extended form factors (through mirrors and glass) carry the specular reflectance or
+// transmittance they picked up, per channel: then `tinted` holds, for each target, the
+// per-channel factor, and `values` the plain (untinted) fraction of rays. Rows that met no
+// specular surface leave `tinted` empty.
 struct FormFactorRow {
   std::vector<int> targets;
   std::vector<double> values;
+  std::vector<Rgb> tinted;
   double escaped = 0;
+
+  Rgb factor(size_t k) const { return tinted.empty() ? Rgb::all(values[k]) : tinted[k]; }
 
   double sum() const {
     double s = 0;

@@ -55,12 +55,27 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
   }
 
   std::vector<int> firstHit(n, -1);
+  const bool extended = !options_.specular.empty();
+  std::vector<Rgb> weight(extended ? n : 0);
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 64), [&](const tbb::blocked_range<int>& range) {
     for (int k = range.begin(); k != range.end(); ++k) {
       const auto& s = samples[k];
       const Eigen::Vector3d direction = frame.toWorld(cosineWeightedDirection(s[0], s[1]));
       const Eigen::Vector3d origin =
           rays_.liftOff(uniformPointOnTriangle(corners, s[2], s[3]), frame.normal, frame.normal);
+      if (extended) {
+        // Fresnel choices draw from the ray's own stream: reproducible on any thread count.
+        Rng pathRng(streamKey(options_.seed, static_cast<uint64_t>(element), static_cast<uint64_t>(k) + 1));
+        int rays = 0;
+        const SpecularPathEnd end = traceThroughSpecular(rays_, normals_, options_.specular, origin, direction,
+                                                         element, pathRng, options_.maxSpecularDepth, &rays);
+        if (end.element >= 0 && end.element != element) {
+          firstHit[k] = end.element;
+          weight[k] = end.weight;
+        }
+        extraRays_ += rays - 1;
+        continue;
+      }
       const RayHit hit = rays_.closestHit(origin, direction);
       // Only the front of a surface receives: a back-face hit is absorbed and counts as escaped.
       if (hit.hit() && hit.element != element && normals_[hit.element].dot(direction) < 0)
@@ -68,19 +83,33 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
     }
   });
 
-  std::sort(firstHit.begin(), firstHit.end());
+  // Group rays by target (sorting a permutation keeps each ray's weight with it).
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return firstHit[a] < firstHit[b]; });
   FormFactorRow row;
   const double perRay = 1.0 / n;
   size_t k = 0;
-  while (k < firstHit.size() && firstHit[k] < 0) ++k;
+  while (k < order.size() && firstHit[order[k]] < 0) ++k;
   row.escaped = k * perRay;
-  while (k < firstHit.size()) {
+  bool anyTint = false;
+  while (k < order.size()) {
+    const int target = firstHit[order[k]];
     size_t end = k;
-    while (end < firstHit.size() && firstHit[end] == firstHit[k]) ++end;
-    row.targets.push_back(firstHit[k]);
+    Rgb tint;
+    while (end < order.size() && firstHit[order[end]] == target) {
+      if (extended) tint += weight[order[end]] * perRay;
+      ++end;
+    }
+    row.targets.push_back(target);
     row.values.push_back((end - k) * perRay);
+    if (extended) {
+      anyTint |= !(tint.r == tint.g && tint.g == tint.b && tint.r == row.values.back());
+      row.tinted.push_back(tint);
+    }
     k = end;
   }
+  if (!anyTint) row.tinted.clear();  // every path was untinted: a plain row
   return row;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/formfactors/form_factor_row.h"
+#include "radiosity/formfactors/specular_paths.h"
 #include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
@@ -14,6 +16,10 @@ struct HemisphereOptions {
   // Optional per-element multiplier of raysPerElement (empty: 1 everywhere). Used to give the
   // rows of emitters, which carry all the direct light, as many rays as they need.
   std::vector<int> rayMultiplier = {};
+  // Per-element specular behaviour; empty when the scene has no mirror or glass, and then no
+  // ray ever continues past its first hit.
+  std::vector<SpecularSurface> specular = {};
+  int maxSpecularDepth = 16;
 };
 
 // Form factors by cosine-weighted hemisphere ray casting (Monte Carlo "gathering" estimate):
@@ -21,6 +27,11 @@ struct HemisphereOptions {
 // F_ij = (rays whose first hit is the front of j) / (rays cast). Origins and directions are
 // stratified (a jittered grid over directions, paired with a shuffled jittered grid over the
 // element) to lower the variance without bias.
+//
+// Extended form factors: a ray whose first hit is a mirror or glass continues (see
+// traceThroughSpecular) to the diffuse element it finally reaches, carrying the specular
+// reflectance or transmittance, so light through mirrors and glass lands inside the
+// view-independent solution. Mirror and glass elements never receive.
 //
 // Each row draws from its own random stream keyed by (seed, element), so a row is the same
 // whether it is computed alone (lazily, for shooting) or with all others, on any thread count.
@@ -34,12 +45,15 @@ class HemisphereFormFactors {
                                           : options_.raysPerElement * options_.rayMultiplier[element];
   }
   const PatchMesh& mesh() const { return mesh_; }
+  // Rays cast beyond the first one of each sample: the continuations through mirrors and glass.
+  uint64_t specularRays() const { return extraRays_.load(); }
 
  private:
   const PatchMesh& mesh_;
   const RayCaster& rays_;
   HemisphereOptions options_;
   std::vector<Eigen::Vector3d> normals_;  // per element, looked up once per ray hit
+  mutable std::atomic<uint64_t> extraRays_{0};
 };
 
 }  // namespace rad

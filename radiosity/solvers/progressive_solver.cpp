@@ -39,7 +39,7 @@ void ProgressiveSolver::step() {
     const int j = row.targets[k];
     // j receives power·fraction, reflects rho_j of it, spread over its area; what it reflects is
     // unshot power of j's shooter.
-    const Rgb reflected = problem_.reflectance[j] * (power * row.values[k]);
+    const Rgb reflected = problem_.reflectance[j] * power * row.factor(k);
     solution_[j] += reflected / problem_.area[j];
     unshot_[shots_.shooterOf(j)] += reflected;
   }
