@@ -28,11 +28,8 @@ HemisphereFormFactors::HemisphereFormFactors(const PatchMesh& mesh, const RayCas
   for (int e = 0; e < mesh.elementCount(); ++e) normals_[e] = mesh.normal(e);
 }
 
-FormFactorRow HemisphereFormFactors::computeRow(int element) const {
+std::vector<std::array<double, 4>> HemisphereFormFactors::rowSamples(int element) const {
   const int n = raysForRow(element);
-  const auto corners = mesh_.corners(element);
-  const Frame frame(normals_[element]);
-
   // All random numbers first, serially from the row's own stream: reproducible for any
   // scheduling. A g×g jittered grid stratifies the first g² rays; the rest are plain random.
   Rng rng(streamKey(options_.seed, static_cast<uint64_t>(element)));
@@ -53,33 +50,62 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
       s[3] = ((p / g) + s[3]) / g;
     }
   }
+  return samples;
+}
 
+RowRay HemisphereFormFactors::castSample(int element, const std::array<Eigen::Vector3d, 3>& corners,
+                                         const std::array<double, 4>& s) const {
+  const Eigen::Vector3d& normal = normals_[element];
+  RowRay ray;
+  ray.direction = Frame(normal).toWorld(cosineWeightedDirection(s[0], s[1]));
+  ray.origin = rays_.liftOff(uniformPointOnTriangle(corners, s[2], s[3]), normal, normal);
+  const RayHit hit = rays_.closestHit(ray.origin, ray.direction);
+  ray.distance = hit.distance;
+  // Only the front of a surface receives: a back-face hit is absorbed and counts as escaped.
+  if (hit.hit() && hit.element != element && normals_[hit.element].dot(ray.direction) < 0)
+    ray.target = hit.element;
+  return ray;
+}
+
+std::vector<RowRay> HemisphereFormFactors::traceRow(int element) const {
+  const auto samples = rowSamples(element);
+  const auto corners = mesh_.corners(element);
+  std::vector<RowRay> rays(samples.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, samples.size(), 64),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t k = range.begin(); k != range.end(); ++k)
+                        rays[k] = castSample(element, corners, samples[k]);
+                    });
+  return rays;
+}
+
+FormFactorRow HemisphereFormFactors::computeRow(int element) const {
+  const auto samples = rowSamples(element);
+  const int n = static_cast<int>(samples.size());
+  const auto corners = mesh_.corners(element);
+  const Eigen::Vector3d& normal = normals_[element];
   std::vector<int> firstHit(n, -1);
   const bool extended = !options_.specular.empty();
   std::vector<Rgb> weight(extended ? n : 0);
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 64), [&](const tbb::blocked_range<int>& range) {
     for (int k = range.begin(); k != range.end(); ++k) {
-      const auto& s = samples[k];
-      const Eigen::Vector3d direction = frame.toWorld(cosineWeightedDirection(s[0], s[1]));
-      const Eigen::Vector3d origin =
-          rays_.liftOff(uniformPointOnTriangle(corners, s[2], s[3]), frame.normal, frame.normal);
-      if (extended) {
-        // Fresnel choices draw from the ray's own stream: reproducible on any thread count.
-        Rng pathRng(streamKey(options_.seed, static_cast<uint64_t>(element), static_cast<uint64_t>(k) + 1));
-        int rays = 0;
-        const SpecularPathEnd end = traceThroughSpecular(rays_, normals_, options_.specular, origin, direction,
-                                                         element, pathRng, options_.maxSpecularDepth, &rays);
-        if (end.element >= 0 && end.element != element) {
-          firstHit[k] = end.element;
-          weight[k] = end.weight;
-        }
-        extraRays_ += rays - 1;
+      if (!extended) {
+        firstHit[k] = castSample(element, corners, samples[k]).target;
         continue;
       }
-      const RayHit hit = rays_.closestHit(origin, direction);
-      // Only the front of a surface receives: a back-face hit is absorbed and counts as escaped.
-      if (hit.hit() && hit.element != element && normals_[hit.element].dot(direction) < 0)
-        firstHit[k] = hit.element;
+      const auto& s = samples[k];
+      const Eigen::Vector3d direction = Frame(normal).toWorld(cosineWeightedDirection(s[0], s[1]));
+      const Eigen::Vector3d origin = rays_.liftOff(uniformPointOnTriangle(corners, s[2], s[3]), normal, normal);
+      // Fresnel choices draw from the ray's own stream: reproducible on any thread count.
+      Rng pathRng(streamKey(options_.seed, static_cast<uint64_t>(element), static_cast<uint64_t>(k) + 1));
+      int rays = 0;
+      const SpecularPathEnd end = traceThroughSpecular(rays_, normals_, options_.specular, origin, direction,
+                                                       element, pathRng, options_.maxSpecularDepth, &rays);
+      if (end.element >= 0 && end.element != element) {
+        firstHit[k] = end.element;
+        weight[k] = end.weight;
+      }
+      extraRays_ += rays - 1;
     }
   });
 

@@ -10,6 +10,13 @@
 
 namespace rad {
 
+// One ray of a row as cast: for drawing a row in the viewer and for checking it.
+struct RowRay {
+  Eigen::Vector3d origin, direction;  // direction is unit length
+  double distance = 0;                // to the first hit; infinite when the ray left the scene
+  int target = -1;                    // element whose front it hit; -1: escaped or a back face
+};
+
 struct HemisphereOptions {
   int raysPerElement = 1024;
   uint64_t seed = 1;
@@ -40,6 +47,8 @@ class HemisphereFormFactors {
   HemisphereFormFactors(const PatchMesh& mesh, const RayCaster& rays, HemisphereOptions options);
 
   FormFactorRow computeRow(int element) const;  // uses TBB across the row's rays
+  // The first segments of the rays computeRow(element) casts, with what each one hit first.
+  std::vector<RowRay> traceRow(int element) const;
   int raysForRow(int element) const {
     return options_.rayMultiplier.empty() ? options_.raysPerElement
                                           : options_.raysPerElement * options_.rayMultiplier[element];
@@ -49,6 +58,12 @@ class HemisphereFormFactors {
   uint64_t specularRays() const { return extraRays_.load(); }
 
  private:
+  // The row's stratified samples (two for the direction, two for the point on the element),
+  // drawn serially from the row's own random stream.
+  std::vector<std::array<double, 4>> rowSamples(int element) const;
+  RowRay castSample(int element, const std::array<Eigen::Vector3d, 3>& corners,
+                    const std::array<double, 4>& sample) const;
+
   const PatchMesh& mesh_;
   const RayCaster& rays_;
   HemisphereOptions options_;
