@@ -15,7 +15,21 @@ packages=(
   libopenexr-dev       # HDR images (EXR)
   libstb-dev           # PNG writer (stb_image_write)
   libgtest-dev         # tests
+  libtinygltf-dev      # glTF 2.0 export (radiosity bake)
 )
+
+# The Khronos glTF validator for the bake tests (npm, pinned by tools/gltf-validator/package-lock.json),
+# only where node and npm exist; the test that needs it skips with a message otherwise.
+install_gltf_validator() {
+  local dir
+  dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/tools/gltf-validator"
+  if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+    echo "setup: node/npm not found: the glTF validator test will be skipped"
+  elif [ ! -d "$dir/node_modules/gltf-validator" ]; then
+    echo "setup: installing the glTF validator into $dir"
+    npm ci --prefix "$dir" --no-audit --no-fund --loglevel=error
+  fi
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -24,6 +38,7 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#packages[@]} packages already installed"
+  install_gltf_validator
   exit 0
 fi
 
@@ -33,3 +48,4 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_gltf_validator

@@ -15,6 +15,7 @@ namespace rad {
 using CommandAction = std::function<void()>;
 
 void registerSolveCommand(CLI::App& app, CommandAction& run);
+void registerBakeCommand(CLI::App& app, CommandAction& run);
 
 // Common flags every command takes (--quiet).
 void addCommonFlags(CLI::App& command);

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   rad::CommandAction run;
   rad::registerSolveCommand(app, run);
+  rad::registerBakeCommand(app, run);
 
   try {
     app.parse(argc, argv);

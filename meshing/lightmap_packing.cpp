@@ -1,0 +1,129 @@
+#include "meshing/lightmap_packing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace rad {
+namespace {
+
+struct Sized {
+  int width, height;
+  bool rotated;
+};
+
+std::vector<Sized> rectSizes(const LightmapCharts& charts, double texelSize, int padding) {
+  std::vector<Sized> sizes;
+  for (const LightmapChart& c : charts.charts) {
+    // At least one texel of geometry, so a tiny chart still owns texels.
+    const int w =
+        std::max(1, static_cast<int>(std::ceil(c.size.x() / texelSize - 1e-9))) + 2 * padding;
+    const int h =
+        std::max(1, static_cast<int>(std::ceil(c.size.y() / texelSize - 1e-9))) + 2 * padding;
+    sizes.push_back(h > w ? Sized{h, w, true} : Sized{w, h, false});
+  }
+  return sizes;
+}
+
+// Places rectangles on shelves of `atlasWidth`; returns the height used (or INT_MAX if a chart is
+// wider than the atlas).
+int shelfPack(const std::vector<Sized>& sizes, int atlasWidth, std::vector<ChartRect>& rects) {
+  std::vector<int> order(sizes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return sizes[a].height != sizes[b].height ? sizes[a].height > sizes[b].height
+                                              : sizes[a].width > sizes[b].width;
+  });
+  rects.assign(sizes.size(), {});
+  int x = 0, y = 0, shelf = 0;
+  for (int i : order) {
+    if (sizes[i].width > atlasWidth) return std::numeric_limits<int>::max();
+    if (x + sizes[i].width > atlasWidth) y += shelf, x = 0, shelf = 0;
+    rects[i] = {x, y, sizes[i].width, sizes[i].height, sizes[i].rotated};
+    x += sizes[i].width;
+    shelf = std::max(shelf, sizes[i].height);
+  }
+  return y + shelf;
+}
+
+}  // namespace
+
+LightmapLayout packLightmapCharts(const LightmapCharts& charts,
+                                  const LightmapPackOptions& options) {
+  if (options.padding < 1) throw std::invalid_argument("lightmap padding must be at least 1 texel");
+  if (charts.charts.empty()) throw std::invalid_argument("no lightmap charts to pack");
+  double area = 0;
+  for (const LightmapChart& c : charts.charts) area += std::max(c.size.x() * c.size.y(), 1e-300);
+
+  LightmapLayout layout;
+  layout.padding = options.padding;
+  std::vector<ChartRect> rects;
+  if (options.texelSize > 0) {
+    layout.texelSize = options.texelSize;
+    const std::vector<Sized> sizes = rectSizes(charts, options.texelSize, options.padding);
+    double rectArea = 0;
+    int widest = 0;
+    for (const Sized& s : sizes)
+      rectArea += double(s.width) * s.height, widest = std::max(widest, s.width);
+    int width = std::max(widest, static_cast<int>(std::ceil(std::sqrt(rectArea / 0.85))));
+    int height = shelfPack(sizes, width, rects);
+    // Widen until the atlas is about square (shelves waste some of the estimate).
+    while (height > width * 1.1 && width < options.maxAtlasSize) {
+      width = std::min(options.maxAtlasSize, static_cast<int>(width * 1.05) + 1);
+      height = shelfPack(sizes, width, rects);
+    }
+    if (width > options.maxAtlasSize || height > options.maxAtlasSize)
+      throw std::invalid_argument(
+          "texel size " + std::to_string(options.texelSize) + " needs an atlas larger than " +
+          std::to_string(options.maxAtlasSize) + " texels; use a larger --texel-size");
+    layout.width = width;
+    layout.height = height;
+  } else {
+    const int side = options.atlasSize;
+    if (side < 1 + 2 * options.padding)
+      throw std::invalid_argument("lightmap size too small for the padding");
+    auto fits = [&](double t) {
+      return shelfPack(rectSizes(charts, t, options.padding), side, rects) <= side;
+    };
+    // A coarse texel first: the geometry would fill the atlas exactly, padding aside.
+    double hi = std::sqrt(area) / side, lo = hi;
+    for (int i = 0; i < 200 && !fits(hi); ++i) hi *= 2;
+    if (!fits(hi))
+      throw std::invalid_argument(std::to_string(charts.charts.size()) + " charts with " +
+                                  std::to_string(options.padding) +
+                                  " texels of padding do not fit a " + std::to_string(side) +
+                                  "² lightmap; raise --lightmap-size");
+    while (fits(lo)) lo *= 0.5;
+    for (int i = 0; i < 40; ++i) {  // bisection in log space: densest texel that still fits
+      const double mid = std::sqrt(lo * hi);
+      (fits(mid) ? hi : lo) = mid;
+    }
+    layout.texelSize = hi;
+    shelfPack(rectSizes(charts, hi, options.padding), side, rects);
+    layout.width = layout.height = side;
+  }
+  layout.rects = rects;
+
+  layout.chartOfElement = charts.chartOfElement;
+  layout.texels.resize(charts.corners.size());
+  for (size_t e = 0; e < charts.corners.size(); ++e) {
+    const int c = charts.chartOfElement[e];
+    const ChartRect& r = layout.rects[c];
+    const Eigen::Vector2d size = charts.charts[c].size;
+    for (int k = 0; k < 3; ++k) {
+      Eigen::Vector2d q = charts.corners[e][k];
+      if (r.rotated) q = Eigen::Vector2d(size.y() - q.y(), q.x());  // a rotation: no mirroring
+      const double top = r.rotated ? size.x() : size.y();
+      // Texel y grows downwards: flip so the chart keeps its winding with v up (OBJ, Blender).
+      layout.texels[e][k] =
+          Eigen::Vector2d(r.x + options.padding + q.x() / layout.texelSize,
+                          r.y + options.padding + (top - q.y()) / layout.texelSize);
+    }
+  }
+  return layout;
+}
+
+}  // namespace rad

@@ -1,0 +1,169 @@
+// `radiosity bake SCENE.obj --out DIR`: the solution baked into a lightmap atlas and into exports
+// that game engines and DCC tools load (glTF binary, OBJ + MTL, PLY vertex colours).
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "meshing/lightmap_charts.h"
+#include "meshing/lightmap_packing.h"
+#include "meshing/vertex_interpolation.h"
+#include "radiosity/app/commands.h"
+#include "radiosity/app/solve_job.h"
+#include "radiosity/core/atomic_file.h"
+#include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
+#include "radiosity/output/gltf_export.h"
+#include "radiosity/output/image_io.h"
+#include "radiosity/output/lightmap_bake.h"
+#include "radiosity/output/lightmap_baked_mesh.h"
+#include "radiosity/output/obj_export.h"
+#include "radiosity/output/vertex_colors_ply.h"
+
+namespace rad {
+namespace {
+
+struct BakeOptions {
+  SolveOptions solve;
+  std::string solverName = "progressive";
+  double texelSize = 0;
+  int lightmapSize = 1024;
+  int padding = 2;
+  int dilation = -1;  // -1: the padding
+  double chartAngle = 30;
+  bool noLightmap = false;
+};
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void runBake(BakeOptions& o) {
+  o.solve.solver = parseSolverKind(o.solverName);
+  if (o.dilation < 0) o.dilation = o.padding;
+  if (o.dilation > o.padding)
+    throw InputError("--dilation " + std::to_string(o.dilation) + " exceeds --padding " +
+                     std::to_string(o.padding) +
+                     ": dilated texels of neighbouring charts would meet");
+  SolveResult result = runSolve(o.solve);
+  const PatchMesh& mesh = *result.mesh;
+  const auto start = std::chrono::steady_clock::now();
+
+  const VertexInterpolation interpolation(mesh);
+  const std::vector<Rgb> vertexRadiance =
+      interpolateVertexRadiance(interpolation, result.radiosity);
+  std::vector<Rgb> elementRadiance(result.radiosity.size());
+  for (size_t e = 0; e < elementRadiance.size(); ++e)
+    elementRadiance[e] = result.radiosity[e] / M_PI;
+  const ToneMap toneMap = ToneMap::autoExposure(elementRadiance, result.problem.area);
+  std::vector<std::string> materialNames;
+  for (const Material& m : result.scene.materials) materialNames.push_back(m.name);
+
+  nlohmann::json summary = {{"scene", o.solve.scenePath},
+                            {"elements", mesh.elementCount()},
+                            {"patches", mesh.patchCount()},
+                            {"tone_map_exposure", toneMap.exposure},
+                            {"solve_seconds", result.times.total}};
+  LightmapLayout layout;
+  Lightmap lightmap;
+  std::vector<std::uint8_t> png;
+  if (!o.noLightmap) {
+    auto t = std::chrono::steady_clock::now();
+    const LightmapCharts charts = buildLightmapCharts(mesh, {o.chartAngle});
+    try {
+      layout = packLightmapCharts(charts, {o.texelSize, o.lightmapSize, o.padding});
+    } catch (const std::invalid_argument& e) {
+      throw InputError(o.solve.scenePath, 0, e.what());
+    }
+    const double chartSeconds = since(t);
+    t = std::chrono::steady_clock::now();
+    lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation);
+    png = encodePng(lightmap.radiance, toneMap);
+    logInfo("lightmap: " + std::to_string(charts.charts.size()) + " charts, " +
+            std::to_string(layout.width) + "×" + std::to_string(layout.height) + " texels of " +
+            std::to_string(layout.texelSize) + " scene units");
+    summary["lightmap"] = {{"charts", charts.charts.size()},
+                           {"width", layout.width},
+                           {"height", layout.height},
+                           {"texel_size", layout.texelSize},
+                           {"padding", layout.padding},
+                           {"dilation", lightmap.dilationRadius},
+                           {"texels_covered", lightmap.count(TexelState::Covered)},
+                           {"texels_conservative", lightmap.count(TexelState::Conservative)},
+                           {"texels_dilated", lightmap.count(TexelState::Dilated)},
+                           {"texels_empty", lightmap.count(TexelState::Empty)},
+                           {"chart_seconds", chartSeconds},
+                           {"bake_seconds", since(t)},
+                           {"unit", "outgoing radiance, W m^-2 sr^-1"}};
+  } else {
+    summary["skipped"] = {
+        {{"what", "lightmap, scene_baked.obj"}, {"why", "--no-lightmap: vertex colours only"}}};
+    logInfo("skipping the lightmap (--no-lightmap): vertex colours only");
+  }
+  const BakedMesh baked = makeBakedMesh(mesh, interpolation, vertexRadiance,
+                                        o.noLightmap ? nullptr : &layout, materialNames);
+
+  // Everything goes under temporary names; only when all are complete do they take their names.
+  ensureDirectory(o.solve.outputDir);
+  const std::filesystem::path dir(o.solve.outputDir);
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  auto open = [&](const std::string& name, bool binary) -> std::ostream& {
+    files.push_back(std::make_unique<AtomicFile>((dir / name).string(), binary));
+    return files.back()->stream();
+  };
+  writeVertexColorsPly(open("vertex_colors.ply", true), interpolation, mesh, vertexRadiance,
+                       toneMap);
+  writeBakedGlb(open("scene_baked.glb", true), baked, o.noLightmap ? nullptr : &png, toneMap);
+  if (!o.noLightmap) {
+    open("lightmap.png", true)
+        .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+    std::ostream& obj = open("scene_baked.obj", false);
+    writeBakedObj(obj, open("scene_baked.mtl", false), baked, "scene_baked.mtl", "lightmap.png");
+  }
+  summary["export_seconds"] = since(start);
+  open("bake.json", false) << summary.dump(2) << "\n";
+  // The EXR library writes by name (atomically on its own): last, so a failure before it leaves
+  // nothing behind.
+  if (!o.noLightmap) writeExr((dir / "lightmap.exr").string(), lightmap.radiance);
+  for (auto& f : files) f->commit();
+  logInfo("baked " + o.solve.scenePath + " into " + o.solve.outputDir + " in " +
+          std::to_string(since(start)) + " s after the solve");
+}
+
+}  // namespace
+
+void registerBakeCommand(CLI::App& app, CommandAction& run) {
+  auto o = std::make_shared<BakeOptions>();
+  CLI::App* bake =
+      app.add_subcommand("bake", "Solve, then bake a lightmap atlas and glTF/OBJ/PLY exports");
+  bake->add_option("scene", o->solve.scenePath, "OBJ scene file (materials from its MTL)")
+      ->required();
+  bake->add_option("--out", o->solve.outputDir, "Output directory (created if missing)")
+      ->required();
+  addSolveOptions(*bake, o->solve, o->solverName);
+  auto* texel = bake->add_option("--texel-size", o->texelSize,
+                                 "Lightmap texel size in scene units (atlas grows to fit)")
+                    ->check(CLI::PositiveNumber);
+  bake->add_option("--lightmap-size", o->lightmapSize,
+                   "Side of the square atlas in texels when --texel-size is not given")
+      ->default_val(o->lightmapSize)
+      ->check(CLI::Range(8, 16384))
+      ->excludes(texel);
+  bake->add_option("--padding", o->padding,
+                   "Empty texels around each chart, each side (>= --dilation)")
+      ->default_val(o->padding)
+      ->check(CLI::Range(1, 64));
+  bake->add_option("--dilation", o->dilation,
+                   "Rings of texels filled around each chart (default: --padding)")
+      ->check(CLI::Range(0, 64));
+  bake->add_option("--chart-angle", o->chartAngle, "Largest normal angle within one chart, degrees")
+      ->default_val(o->chartAngle)
+      ->check(CLI::Range(0.0, 89.0));
+  bake->add_flag("--no-lightmap,--vertex-colors-only", o->noLightmap,
+                 "Vertex colours only: vertex_colors.ply and an unlit scene_baked.glb");
+  addCommonFlags(*bake);
+  bake->callback([&run, o] { run = [o] { runBake(*o); }; });
+}
+
+}  // namespace rad

@@ -1,0 +1,160 @@
+#include "radiosity/output/lightmap_bake.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "meshing/lightmap_charts.h"
+#include "radiosity/core/progress.h"
+
+namespace rad {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+
+// Barycentric coordinates of p in triangle t (non-degenerate in texel space).
+Eigen::Vector3d barycentric(const std::array<Vec2, 3>& t, const Vec2& p) {
+  const Vec2 e1 = t[1] - t[0], e2 = t[2] - t[0], d = p - t[0];
+  const double det = e1.x() * e2.y() - e1.y() * e2.x();
+  const double b1 = (d.x() * e2.y() - d.y() * e2.x()) / det;
+  const double b2 = (e1.x() * d.y() - e1.y() * d.x()) / det;
+  return {1 - b1 - b2, b1, b2};
+}
+
+// Barycentrics of the point of t nearest to p (Ericson, Real-Time Collision Detection 5.1.5).
+Eigen::Vector3d nearestBarycentric(const std::array<Vec2, 3>& t, const Vec2& p) {
+  const Vec2 ab = t[1] - t[0], ac = t[2] - t[0], ap = p - t[0];
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+  const Vec2 bp = p - t[1];
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    const double v = d1 / (d1 - d3);
+    return {1 - v, v, 0};
+  }
+  const Vec2 cp = p - t[2];
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    const double w = d2 / (d2 - d6);
+    return {1 - w, 0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0, 1 - w, w};
+  }
+  const double denom = 1 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  return {1 - v - w, v, w};
+}
+
+}  // namespace
+
+size_t Lightmap::count(TexelState s) const {
+  return static_cast<size_t>(std::count(state.begin(), state.end(), s));
+}
+
+Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
+                      const VertexInterpolation& interpolation,
+                      const std::vector<Rgb>& vertexRadiance, int dilationRadius) {
+  if (dilationRadius < 0 || dilationRadius > layout.padding)
+    throw std::invalid_argument("dilation radius " + std::to_string(dilationRadius) +
+                                " exceeds the padding of " + std::to_string(layout.padding) +
+                                " texels: charts would bleed into each other");
+  if (static_cast<int>(vertexRadiance.size()) != interpolation.vertexCount())
+    throw std::invalid_argument("bakeLightmap: one radiance value per output vertex expected");
+  const int width = layout.width, height = layout.height;
+  Lightmap map;
+  map.radiance = ImageRgb(width, height);
+  map.chart.assign(static_cast<size_t>(width) * height, -1);
+  map.element.assign(map.chart.size(), -1);
+  map.state.assign(map.chart.size(), TexelState::Empty);
+  map.dilationRadius = dilationRadius;
+
+  auto value = [&](int e, const Eigen::Vector3d& b) {
+    const auto& v = interpolation.triangle(e);
+    return vertexRadiance[v[0]] * b[0] + vertexRadiance[v[1]] * b[1] + vertexRadiance[v[2]] * b[2];
+  };
+  auto bounds = [&](const std::array<Vec2, 3>& t, int& x0, int& y0, int& x1, int& y1) {
+    const Vec2 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]), hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
+    x0 = std::max(0, static_cast<int>(std::floor(lo.x()))),
+    y0 = std::max(0, static_cast<int>(std::floor(lo.y())));
+    x1 = std::min(width - 1, static_cast<int>(std::floor(hi.x()))),
+    y1 = std::min(height - 1, static_cast<int>(std::floor(hi.y())));
+  };
+
+  const int elements = mesh.elementCount();
+  Progress progress("lightmap", 2 * static_cast<uint64_t>(elements), "element passes");
+  // Pass 1: texel centres inside an element (first element wins on a shared edge).
+  for (int e = 0; e < elements; ++e, progress.advance()) {
+    const auto& t = layout.texels[e];
+    int x0, y0, x1, y1;
+    bounds(t, x0, y0, x1, y1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const size_t i = map.index(x, y);
+        if (map.state[i] != TexelState::Empty) continue;
+        const Eigen::Vector3d b = barycentric(t, Vec2(x + 0.5, y + 0.5));
+        if (b.minCoeff() < -1e-12 || !b.allFinite()) continue;
+        map.radiance.pixels[i] = value(e, b.cwiseMax(0.0) / b.cwiseMax(0.0).sum());
+        map.chart[i] = layout.chartOfElement[e], map.element[i] = e,
+        map.state[i] = TexelState::Covered;
+      }
+  }
+  // Pass 2: texels an element overlaps without holding their centre (chart borders, slivers).
+  for (int e = 0; e < elements; ++e, progress.advance()) {
+    const auto& t = layout.texels[e];
+    int x0, y0, x1, y1;
+    bounds(t, x0, y0, x1, y1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const size_t i = map.index(x, y);
+        if (map.state[i] != TexelState::Empty) continue;
+        const std::array<Vec2, 3> lower{Vec2(x, y), Vec2(x + 1, y), Vec2(x + 1, y + 1)};
+        const std::array<Vec2, 3> upper{Vec2(x, y), Vec2(x + 1, y + 1), Vec2(x, y + 1)};
+        if (!trianglesOverlap2d(t, lower, 1e-9) && !trianglesOverlap2d(t, upper, 1e-9)) continue;
+        map.radiance.pixels[i] = value(e, nearestBarycentric(t, Vec2(x + 0.5, y + 0.5)));
+        map.chart[i] = layout.chartOfElement[e], map.element[i] = e,
+        map.state[i] = TexelState::Conservative;
+      }
+  }
+  progress.finish();
+
+  // Dilation, one ring at a time from a snapshot, so a ring reads only earlier rings.
+  for (int ring = 0; ring < dilationRadius; ++ring) {
+    const std::vector<int> chartBefore = map.chart;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const size_t i = map.index(x, y);
+        if (chartBefore[i] >= 0) continue;
+        int chosen = -1;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+            const int c = chartBefore[map.index(nx, ny)];
+            if (c >= 0 && (chosen < 0 || c < chosen)) chosen = c;
+          }
+        if (chosen < 0) continue;
+        Rgb sum;
+        int n = 0;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+            const size_t j = map.index(nx, ny);
+            if (chartBefore[j] == chosen) sum += map.radiance.pixels[j], ++n;
+          }
+        map.radiance.pixels[i] = sum / n;
+        map.chart[i] = chosen, map.state[i] = TexelState::Dilated;
+      }
+  }
+  return map;
+}
+
+}  // namespace rad

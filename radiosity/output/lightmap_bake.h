@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "meshing/lightmap_packing.h"
+#include "meshing/patch_mesh.h"
+#include "meshing/vertex_interpolation.h"
+#include "radiosity/core/image.h"
+#include "radiosity/core/rgb.h"
+
+namespace rad {
+
+enum class TexelState : std::uint8_t {
+  Empty,         // outside every chart's reach: black
+  Covered,       // its centre lies in an element: the solution there
+  Conservative,  // an element overlaps it but not its centre: the solution at the nearest point
+  Dilated,       // filled from neighbours of the same chart, so bilinear filtering does not bleed
+};
+
+// A baked lightmap: linear outgoing radiance (W·m⁻²·sr⁻¹) per texel, and which chart and element
+// each texel belongs to (for tests and statistics).
+struct Lightmap {
+  ImageRgb radiance;
+  std::vector<int> chart;    // per texel, -1 where Empty
+  std::vector<int> element;  // per texel, -1 where Dilated or Empty
+  std::vector<TexelState> state;
+  int dilationRadius = 0;
+
+  size_t index(int x, int y) const { return static_cast<size_t>(y) * radiance.width + x; }
+  size_t count(TexelState s) const;
+};
+
+// Rasterises every element into its chart's texels and evaluates the solution there: the
+// barycentric interpolation of `vertexRadiance` (one per output vertex of `interpolation`) over
+// the element holding the texel centre. Texels an element only partly covers take the value at
+// the element's point nearest their centre, so every element owns texels and bilinear lookups
+// inside an element read only its chart. Then `dilationRadius` rings of empty texels around each
+// chart (at most the layout's padding) take the mean of their filled neighbours of one chart —
+// never of two. Throws std::invalid_argument when dilationRadius exceeds the padding.
+Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
+                      const VertexInterpolation& interpolation,
+                      const std::vector<Rgb>& vertexRadiance, int dilationRadius);
+
+}  // namespace rad

@@ -1,0 +1,41 @@
+#include "radiosity/output/lightmap_baked_mesh.h"
+
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+namespace rad {
+
+BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interpolation,
+                        const std::vector<Rgb>& vertexRadiance, const LightmapLayout* layout,
+                        const std::vector<std::string>& materialNames) {
+  if (static_cast<int>(vertexRadiance.size()) != interpolation.vertexCount())
+    throw std::invalid_argument("makeBakedMesh: one radiance value per output vertex expected");
+  BakedMesh out;
+  out.materialNames = materialNames;
+  std::map<std::pair<int, int>, int> index;  // (interpolated vertex, chart) → output vertex
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const int chart = layout ? layout->chartOfElement[e] : 0;
+    std::array<int, 3> tri;
+    for (int k = 0; k < 3; ++k) {
+      const int v = interpolation.triangle(e)[k];
+      auto [it, inserted] =
+          index.emplace(std::make_pair(v, chart), static_cast<int>(out.positions.size()));
+      if (inserted) {
+        out.positions.push_back(interpolation.position(v));
+        out.normals.push_back(interpolation.normal(v));
+        out.radiance.push_back(vertexRadiance[v]);
+        if (layout) out.uvs.push_back(layout->uv(e, k));
+      }
+      tri[k] = it->second;
+    }
+    out.triangles.push_back(tri);
+    const int m = mesh.material(e);
+    if (m < 0 || m >= static_cast<int>(materialNames.size()))
+      throw std::invalid_argument("makeBakedMesh: material index without a name");
+    out.materials.push_back(m);
+  }
+  return out;
+}
+
+}  // namespace rad

@@ -1,0 +1,18 @@
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "radiosity/output/lightmap_baked_mesh.h"
+
+namespace rad {
+
+// Writes the baked mesh as Wavefront OBJ + MTL with the lightmap UVs as `vt` (v up, as OBJ
+// expects: v = 1 − glTF v). Each scene material becomes an MTL material that shows the
+// lightmap unlit: `illum 0` (colour = Kd, no lighting) with Kd 1 and `map_Kd` = `texture`
+// (a file name relative to the MTL). `mtlName` is the MTL's file name as the OBJ references it.
+// Throws std::invalid_argument when the mesh has no lightmap UVs.
+void writeBakedObj(std::ostream& obj, std::ostream& mtl, const BakedMesh& mesh,
+                   const std::string& mtlName, const std::string& texture);
+
+}  // namespace rad

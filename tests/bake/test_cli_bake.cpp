@@ -1,0 +1,171 @@
+// `radiosity bake` end to end: the furnace lightmap, the exports (read back with tinygltf and as
+// text), the Khronos glTF validator, and bad options.
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "radiosity/output/image_io.h"
+#include "tests/support/run_command.h"
+
+namespace rad {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::runRadiosity;
+using testing::scratchPath;
+
+const std::string kData = RADIOSITY_DATA_DIR;
+
+std::string readText(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// One Cornell bake shared by the export tests (a second or so).
+const fs::path& cornellBake() {
+  static const fs::path out = [] {
+    const fs::path dir = scratchPath("bake_cornell");
+    const auto r =
+        runRadiosity("bake " + kData + "/cornell_box/cornell_box.obj --out " + dir.string() +
+                     " --elements 600 --rays 256 --lightmap-size 256 --quiet");
+    EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+    return dir;
+  }();
+  return out;
+}
+
+TEST(CliBake, FurnaceLightmapIsUniformKeOverOneMinusRho) {
+  const fs::path dir = scratchPath("bake_furnace");
+  const auto r = runRadiosity("bake " + kData + "/tests/furnace_box.obj --out " + dir.string() +
+                              " --solver gauss-seidel --tolerance 1e-8 --elements 300 --rays 64 "
+                              "--lightmap-size 64 --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  // Ke = 1, rho = 0.5 on every face of a closed box: L = Ke / (1 - rho) = 2 exactly; the
+  // gathering solve stops at a relative residual of 1e-8 (REFERENCES.md, furnace).
+  const ImageRgb image = readExr((dir / "lightmap.exr").string());
+  const auto summary = nlohmann::json::parse(readText(dir / "bake.json"));
+  size_t filled = 0;
+  for (const Rgb& p : image.pixels) {
+    if (p.isZero()) continue;  // outside every chart
+    ++filled;
+    for (int c = 0; c < 3; ++c) ASSERT_NEAR(p[c], 2.0, 2e-5);
+  }
+  const auto& lm = summary["lightmap"];
+  EXPECT_EQ(filled, lm["texels_covered"].get<size_t>() + lm["texels_conservative"].get<size_t>() +
+                        lm["texels_dilated"].get<size_t>());
+  EXPECT_GT(filled, image.pixels.size() / 3);
+  fs::remove_all(dir);
+}
+
+TEST(CliBake, GlbHoldsGeometryLightmapUvsColoursAndTheEmbeddedPng) {
+  const fs::path glb = cornellBake() / "scene_baked.glb";
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, glb.string())) << err;
+  ASSERT_EQ(model.images.size(), 1u);
+  EXPECT_EQ(model.images[0].mimeType, "image/png");
+  ASSERT_GE(model.images[0].bufferView, 0);
+  ASSERT_FALSE(model.meshes.empty());
+  for (const auto& prim : model.meshes[0].primitives) {
+    for (const char* a : {"POSITION", "NORMAL", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"})
+      EXPECT_TRUE(prim.attributes.count(a)) << a;
+    const auto& uv = model.accessors[prim.attributes.at("TEXCOORD_1")];
+    EXPECT_EQ(uv.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
+    const auto& m = model.materials[prim.material];
+    EXPECT_EQ(m.emissiveTexture.index, 0);
+    EXPECT_EQ(m.pbrMetallicRoughness.baseColorFactor[0], 0.0);
+  }
+  // UVs inside [0, 1] (a texture lookup outside would clamp to another chart's edge).
+  const auto& acc = model.accessors[model.meshes[0].primitives[0].attributes.at("TEXCOORD_1")];
+  const auto& view = model.bufferViews[acc.bufferView];
+  const float* uv = reinterpret_cast<const float*>(model.buffers[view.buffer].data.data() +
+                                                   view.byteOffset + acc.byteOffset);
+  for (size_t i = 0; i < 2 * acc.count; ++i) {
+    EXPECT_GE(uv[i], 0.0f);
+    EXPECT_LE(uv[i], 1.0f);
+  }
+}
+
+TEST(CliBake, ObjReferencesThePngWithOneUvPerVertex) {
+  const std::string obj = readText(cornellBake() / "scene_baked.obj");
+  const std::string mtl = readText(cornellBake() / "scene_baked.mtl");
+  EXPECT_NE(obj.find("mtllib scene_baked.mtl"), std::string::npos);
+  EXPECT_NE(mtl.find("map_Kd lightmap.png"), std::string::npos);
+  std::istringstream lines(obj);
+  std::string line;
+  size_t v = 0, vt = 0, f = 0;
+  while (std::getline(lines, line)) {
+    if (line.rfind("v ", 0) == 0) ++v;
+    if (line.rfind("vt ", 0) == 0) {
+      ++vt;
+      double s, t;
+      ASSERT_EQ(std::sscanf(line.c_str(), "vt %lf %lf", &s, &t), 2);
+      ASSERT_TRUE(s >= 0 && s <= 1 && t >= 0 && t <= 1) << line;
+    }
+    if (line.rfind("f ", 0) == 0) ++f;
+  }
+  EXPECT_EQ(v, vt);
+  EXPECT_GT(f, 0u);
+  for (const char* name : {"lightmap.exr", "lightmap.png", "vertex_colors.ply", "bake.json"})
+    EXPECT_TRUE(fs::exists(cornellBake() / name)) << name;
+}
+
+// The Khronos validator (npm gltf-validator, installed by scripts/setup.sh into tools/).
+void validate(const fs::path& glb) {
+  const fs::path tool = fs::path(RADIOSITY_GLTF_VALIDATOR);
+  if (std::system("command -v node >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "node is not installed: glTF validator skipped";
+  if (!fs::exists(tool / "node_modules/gltf-validator"))
+    GTEST_SKIP() << "gltf-validator not installed (run scripts/setup.sh, or npm ci --prefix "
+                 << tool.string() << ")";
+  const fs::path log =
+      fs::temp_directory_path() / ("gltf_validator_" + std::to_string(::getpid()) + ".txt");
+  const int status = std::system(("node " + (tool / "validate.js").string() + " " + glb.string() +
+                                  " >" + log.string() + " 2>&1")
+                                     .c_str());
+  const std::string report = readText(log);
+  fs::remove(log);
+  EXPECT_EQ(status, 0) << report;
+}
+
+TEST(CliBake, GlbPassesTheKhronosValidator) { validate(cornellBake() / "scene_baked.glb"); }
+
+TEST(CliBake, VertexColoursOnlySkipsTheLightmapAndStaysValid) {
+  const fs::path dir = scratchPath("bake_vc");
+  const auto r =
+      runRadiosity("bake " + kData + "/cornell_box/cornell_box.obj --out " + dir.string() +
+                   " --elements 300 --rays 64 --vertex-colors-only --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  EXPECT_FALSE(fs::exists(dir / "lightmap.exr"));
+  EXPECT_FALSE(fs::exists(dir / "scene_baked.obj"));
+  EXPECT_TRUE(fs::exists(dir / "vertex_colors.ply"));
+  ASSERT_TRUE(fs::exists(dir / "scene_baked.glb"));
+  validate(dir / "scene_baked.glb");
+  fs::remove_all(dir);
+}
+
+TEST(CliBake, BadOptionsFailAndLeaveNothing) {
+  const fs::path dir = scratchPath("bake_bad");
+  auto r = runRadiosity("bake " + kData + "/tests/furnace_box.obj --out " + dir.string() +
+                        " --padding 2 --dilation 3");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("--dilation"), std::string::npos) << r.stderrText;
+  EXPECT_FALSE(fs::exists(dir));
+  r = runRadiosity("bake " + kData + "/tests/furnace_box.obj --out " + dir.string() +
+                   " --texel-size 0.1 --lightmap-size 64");
+  EXPECT_EQ(r.exitCode, 2);
+  r = runRadiosity("bake " + kData + "/tests/missing.obj --out " + dir.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("missing.obj"), std::string::npos);
+  EXPECT_TRUE(!fs::exists(dir) || fs::is_empty(dir));
+}
+
+}  // namespace
+}  // namespace rad

@@ -1,0 +1,236 @@
+// Lightmap charts, packing and baking on the Cornell box mesh and on a spiral ramp whose planar
+// projection would overlap itself.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "meshing/lightmap_charts.h"
+#include "meshing/lightmap_packing.h"
+#include "meshing/vertex_interpolation.h"
+#include "radiosity/output/lightmap_bake.h"
+#include "radiosity/output/vertex_colors_ply.h"
+#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_mesh.h"
+
+namespace rad {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+
+PatchMesh cornellMesh() {
+  PatchMesh mesh = buildPatchMesh(
+      loadObjScene(std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box.obj"));
+  mesh.subdivideUniform(0.002);
+  return mesh;
+}
+
+// A ramp winding 1.5 turns around the z axis, rising slowly: every quad faces about +z, but a
+// projection along z overlaps itself after one turn, so the charts must split.
+PatchMesh spiralRamp() {
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<PatchPolygon> polygons;
+  const int steps = 36;
+  for (int i = 0; i <= steps; ++i) {
+    const double a = 3 * M_PI * i / steps, z = 0.3 * i / steps;
+    positions.emplace_back(std::cos(a), std::sin(a), z);
+    positions.emplace_back(2 * std::cos(a), 2 * std::sin(a), z);
+  }
+  for (int i = 0; i < steps; ++i) polygons.push_back({{2 * i, 2 * i + 1, 2 * i + 3, 2 * i + 2}, 0});
+  PatchMesh mesh(positions, polygons);
+  mesh.subdivideUniform(0.02);
+  return mesh;
+}
+
+// Which charts claim each of 4×4 sub-samples per texel: independent of the baker's rasteriser.
+int overlappingSamples(const LightmapLayout& layout) {
+  const int s = 4;
+  std::vector<int> owner(static_cast<size_t>(layout.width * s) * layout.height * s, -1);
+  int overlaps = 0;
+  for (size_t e = 0; e < layout.texels.size(); ++e) {
+    const auto& t = layout.texels[e];
+    const Vec2 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]) * s,
+               hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]) * s;
+    for (int y = std::max(0, int(lo.y())); y <= std::min(layout.height * s - 1, int(hi.y())); ++y)
+      for (int x = std::max(0, int(lo.x())); x <= std::min(layout.width * s - 1, int(hi.x()));
+           ++x) {
+        const Vec2 p((x + 0.5) / s, (y + 0.5) / s);
+        bool inside = true;
+        for (int k = 0; k < 3; ++k) {
+          const Vec2 a = t[k], b = t[(k + 1) % 3];
+          const double c = (b - a).x() * (p - a).y() - (b - a).y() * (p - a).x();
+          const double c2 =
+              (t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x();
+          if (c * c2 < 0) inside = false;
+        }
+        if (!inside) continue;
+        int& o = owner[static_cast<size_t>(y) * layout.width * s + x];
+        if (o >= 0 && o != layout.chartOfElement[e]) ++overlaps;
+        o = layout.chartOfElement[e];
+      }
+  }
+  return overlaps;
+}
+
+bool rectsDisjoint(const LightmapLayout& l) {
+  for (size_t a = 0; a < l.rects.size(); ++a) {
+    const ChartRect& r = l.rects[a];
+    if (r.x < 0 || r.y < 0 || r.x + r.width > l.width || r.y + r.height > l.height) return false;
+    for (size_t b = a + 1; b < l.rects.size(); ++b) {
+      const ChartRect& q = l.rects[b];
+      if (r.x < q.x + q.width && q.x < r.x + r.width && r.y < q.y + q.height &&
+          q.y < r.y + r.height)
+        return false;
+    }
+  }
+  return true;
+}
+
+struct Baked {
+  PatchMesh mesh;
+  LightmapCharts charts;
+  LightmapLayout layout;
+  VertexInterpolation interpolation;
+  std::vector<Rgb> vertexRadiance;
+  Lightmap map;
+};
+
+// Radiosity varying smoothly over the scene (B = 1 + x + 2y + 3z per channel, scaled), so texel
+// values differ from face to face and an off-by-one texel or swapped UV shows.
+Baked bake(PatchMesh mesh, const LightmapPackOptions& pack) {
+  std::vector<Rgb> radiosity(mesh.elementCount());
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const Eigen::Vector3d c = mesh.centroid(e);
+    radiosity[e] = Rgb(1 + c.x(), 1 + 2 * c.y(), 1 + 3 * c.z()) * M_PI;
+  }
+  LightmapCharts charts = buildLightmapCharts(mesh);
+  LightmapLayout layout = packLightmapCharts(charts, pack);
+  VertexInterpolation interpolation(mesh);
+  std::vector<Rgb> vertexRadiance = interpolateVertexRadiance(interpolation, radiosity);
+  Lightmap map = bakeLightmap(mesh, layout, interpolation, vertexRadiance, pack.padding);
+  return {std::move(mesh),          std::move(charts),         std::move(layout),
+          std::move(interpolation), std::move(vertexRadiance), std::move(map)};
+}
+
+TEST(LightmapCharts, CornellChartsNeverOverlapAndRectsAreDisjoint) {
+  const Baked b = bake(cornellMesh(), {0, 256, 2});
+  EXPECT_EQ(overlappingSamples(b.layout), 0);
+  EXPECT_TRUE(rectsDisjoint(b.layout));
+  // Walls at right angles never share a chart (30° threshold); the 17 patches give 16 charts
+  // because the non-planar left wall's two triangles are coplanar within 1°.
+  EXPECT_GE(b.charts.charts.size(), 16u);
+}
+
+TEST(LightmapCharts, SpiralRampSplitsInsteadOfOverlapping) {
+  const Baked b = bake(spiralRamp(), {0, 256, 2});
+  EXPECT_GE(b.charts.charts.size(), 2u);
+  EXPECT_EQ(overlappingSamples(b.layout), 0);
+  for (int e = 0; e < b.mesh.elementCount(); ++e) {
+    int texels = 0;
+    for (int id : b.map.element) texels += id == e;
+    ASSERT_GE(texels, 1) << "element " << e;
+  }
+}
+
+TEST(LightmapBake, EveryFaceOwnsATexel) {
+  const Baked b = bake(cornellMesh(), {0, 128, 2});  // coarse: many elements smaller than a texel
+  std::vector<int> owned(b.mesh.elementCount(), 0);
+  for (int id : b.map.element)
+    if (id >= 0) ++owned[id];
+  for (int e = 0; e < b.mesh.elementCount(); ++e) ASSERT_GE(owned[e], 1) << "element " << e;
+}
+
+TEST(LightmapBake, PaddingAtLeastDilationAndGeometryInsideItsRect) {
+  const Baked b = bake(cornellMesh(), {0.01, 0, 3});
+  EXPECT_GE(b.layout.padding, b.map.dilationRadius);
+  for (size_t e = 0; e < b.layout.texels.size(); ++e) {
+    const ChartRect& r = b.layout.rects[b.layout.chartOfElement[e]];
+    for (const Vec2& p : b.layout.texels[e]) {
+      EXPECT_GE(p.x(), r.x + b.layout.padding - 1e-9);
+      EXPECT_LE(p.x(), r.x + r.width - b.layout.padding + 1e-9);
+      EXPECT_GE(p.y(), r.y + b.layout.padding - 1e-9);
+      EXPECT_LE(p.y(), r.y + r.height - b.layout.padding + 1e-9);
+    }
+  }
+  EXPECT_THROW(bakeLightmap(b.mesh, b.layout, b.interpolation, b.vertexRadiance, 4),
+               std::invalid_argument);
+  // With --texel-size the density is what was asked for.
+  EXPECT_DOUBLE_EQ(b.layout.texelSize, 0.01);
+}
+
+TEST(LightmapBake, TexelAtFaceCentreEqualsTheSolutionThere) {
+  const Baked b = bake(cornellMesh(), {0, 512, 2});
+  int checked = 0;
+  for (int e = 0; e < b.mesh.elementCount(); ++e) {
+    const auto& t = b.layout.texels[e];
+    const Vec2 c = (t[0] + t[1] + t[2]) / 3;
+    const int x = int(c.x()), y = int(c.y());
+    const size_t i = b.map.index(x, y);
+    if (b.map.element[i] != e) continue;  // a neighbour holds this texel centre
+    const auto& v = b.interpolation.triangle(e);
+    const Rgb atCentre =
+        (b.vertexRadiance[v[0]] + b.vertexRadiance[v[1]] + b.vertexRadiance[v[2]]) / 3;
+    // Linear over the element: the texel centre is within √2/2 texel of the centroid, so the
+    // values differ by at most max|ΔL| · (√2/2) / (smallest altitude in texels).
+    double minAltitude = INFINITY, spread = 0;
+    const double area2 =
+        std::abs((t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x());
+    for (int k = 0; k < 3; ++k) {
+      minAltitude = std::min(minAltitude, area2 / (t[(k + 1) % 3] - t[k]).norm());
+      for (int c2 = 0; c2 < 3; ++c2)
+        spread = std::max(
+            spread, std::abs(b.vertexRadiance[v[k]][c2] - b.vertexRadiance[v[(k + 1) % 3]][c2]));
+    }
+    const double tolerance = spread * (std::sqrt(0.5) / minAltitude) + 1e-9;
+    for (int ch = 0; ch < 3; ++ch)
+      ASSERT_NEAR(b.map.radiance.pixels[i][ch], atCentre[ch], tolerance) << "element " << e;
+    ++checked;
+  }
+  EXPECT_GT(checked, b.mesh.elementCount() * 9 / 10);
+}
+
+TEST(LightmapBake, BilinearSamplesInsideAFaceReadOnlyItsChart) {
+  const Baked b = bake(cornellMesh(), {0, 256, 2});
+  for (int e = 0; e < b.mesh.elementCount(); ++e) {
+    const auto& t = b.layout.texels[e];
+    const Vec2 c = (t[0] + t[1] + t[2]) / 3;
+    std::vector<Vec2> samples{c};
+    for (int k = 0; k < 3; ++k) {
+      samples.push_back(t[k] + (c - t[k]) * 1e-6);
+      samples.push_back((t[k] + t[(k + 1) % 3]) / 2 + (c - (t[k] + t[(k + 1) % 3]) / 2) * 1e-6);
+    }
+    for (const Vec2& p : samples) {
+      const int x0 = int(std::floor(p.x() - 0.5)), y0 = int(std::floor(p.y() - 0.5));
+      for (int dy = 0; dy <= 1; ++dy)
+        for (int dx = 0; dx <= 1; ++dx) {
+          const size_t i = b.map.index(x0 + dx, y0 + dy);
+          ASSERT_EQ(b.map.chart[i], b.layout.chartOfElement[e]) << "element " << e;
+          ASSERT_NE(b.map.state[i], TexelState::Empty);
+        }
+    }
+  }
+}
+
+TEST(LightmapBake, UnlitChartsGetValidBlackTexels) {
+  PatchMesh mesh = cornellMesh();
+  LightmapCharts charts = buildLightmapCharts(mesh);
+  LightmapLayout layout = packLightmapCharts(charts, {0, 128, 2});
+  std::vector<Rgb> radiosity(mesh.elementCount(), Rgb::all(1.0));
+  const int dark = charts.chartOfElement[0];
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    if (charts.chartOfElement[e] == dark) radiosity[e] = Rgb();
+  VertexInterpolation interpolation(mesh);
+  const Lightmap map = bakeLightmap(mesh, layout, interpolation,
+                                    interpolateVertexRadiance(interpolation, radiosity), 2);
+  int texels = 0;
+  for (size_t i = 0; i < map.chart.size(); ++i)
+    if (map.chart[i] == dark) {
+      ++texels;
+      EXPECT_TRUE(map.radiance.pixels[i].isZero());
+    }
+  EXPECT_GT(texels, 0);
+}
+
+}  // namespace
+}  // namespace rad
