@@ -47,6 +47,16 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
   command.add_option("--shadow-rays", options.shadowRays,
                      "analytic: visibility rays per receiver point and patch")
       ->default_val(options.shadowRays);
+  command.add_option("--refine-threshold", options.refineThreshold,
+                     "adaptive refinement (analytic, progressive): split elements whose radiance "
+                     "differs from a neighbour's by more than this fraction, or that a shadow "
+                     "boundary crosses (0: uniform mesh only)");
+  command.add_option("--min-area", options.minArea,
+                     "refinement: smallest element area (default: element area / 16)");
+  command.add_option("--max-elements", options.maxElements,
+                     "refinement: element budget (default: 8 × the uniform mesh)");
+  command.add_option("--refine-passes", options.refinePasses, "refinement: solve-and-refine rounds")
+      ->default_val(options.refinePasses);
   command.add_option("--receiver-points", options.receiverPoints,
                      "analytic: sample points per element, 1 or 3")
       ->default_val(options.receiverPoints);

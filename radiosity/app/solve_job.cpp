@@ -10,6 +10,7 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/progress.h"
+#include "meshing/adaptive_refinement.h"
 #include "radiosity/formfactors/analytic_patch_shots.h"
 #include "radiosity/formfactors/form_factor_cache.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
@@ -145,6 +146,12 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     throw InputError("--receiver-points must be 1 or 3");
   if (options.patchArea < 0 || !std::isfinite(options.patchArea))
     throw InputError("--patch-area must be a positive number");
+  if (options.refineThreshold < 0 || options.minArea < 0 || options.maxElements < 0 || options.refinePasses < 0)
+    throw InputError("--refine-threshold, --min-area, --max-elements and --refine-passes must be non-negative");
+  if (options.refineThreshold > 0 &&
+      (options.formFactors != FormFactorMethod::Analytic || options.solver != SolverKind::Progressive))
+    throw InputError("adaptive refinement (--refine-threshold) needs --form-factors analytic and "
+                     "--solver progressive: patches keep shooting while the elements are refined");
   if (options.bounces >= 0 && options.solver != SolverKind::Jacobi)
     throw InputError("--bounces applies to --solver jacobi only");
 
@@ -210,6 +217,13 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   if (options.formFactors == FormFactorMethod::Analytic)
     analytic = std::make_unique<AnalyticPatchShots>(
         mesh, rays, AnalyticOptions{options.receiverPoints, options.shadowRays, options.seed});
+  if (analytic) {
+    // Shadow boundaries worth refining are those of the emitters' direct light.
+    std::vector<char> emitting(mesh.shooterCount(), 0);
+    for (int e = 0; e < mesh.elementCount(); ++e)
+      if (problem.emission[e].maxComponent() > 0) emitting[mesh.shooter(e)] = 1;
+    analytic->setShadowCasters(std::move(emitting));
+  }
   ShotRows& shots = analytic ? static_cast<ShotRows&>(*analytic) : cache;
   result.formFactorMethod = analytic ? "analytic" : "hemisphere";
   result.shooters = shots.shooterCount();
@@ -250,22 +264,51 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     }
   }
 
-  Progress progress("solve (" + solver->name() + ")", 0, "iterations");
-  const double startMeasure = std::max(solver->progress(), 1e-300);
-  while (solver->iterations() < maxIterations && solver->progress() > tolerance) {
-    solver->step();
-    progress.advance();
-    if (tolerance > 0 && solver->progress() > 0) {
-      // Fraction of the way, on a log scale, from the starting measure to the tolerance.
-      const double f = std::log(startMeasure / solver->progress()) / std::log(startMeasure / tolerance);
-      progress.setFraction(std::clamp(f, 0.0, 1.0), solver->progressMeasure() + " " +
-                                                        formatNumber(solver->progress()));
+  const bool refine = options.refineThreshold > 0;
+  RefinementOptions refinement{options.refineThreshold,
+                               options.minArea > 0 ? options.minArea : result.maxArea / 16,
+                               options.maxElements > 0 ? options.maxElements : 8 * mesh.elementCount()};
+  result.elementsBeforeRefinement = mesh.elementCount();
+  for (int pass = 0;; ++pass) {
+    Progress progress("solve (" + solver->name() + ")", 0, "iterations");
+    const double startMeasure = std::max(solver->progress(), 1e-300);
+    while (solver->iterations() < maxIterations && solver->progress() > tolerance) {
+      solver->step();
+      progress.advance();
+      if (tolerance > 0 && solver->progress() > 0) {
+        // Fraction of the way, on a log scale, from the starting measure to the tolerance.
+        const double f = std::log(startMeasure / solver->progress()) / std::log(startMeasure / tolerance);
+        progress.setFraction(std::clamp(f, 0.0, 1.0), solver->progressMeasure() + " " +
+                                                          formatNumber(solver->progress()));
+      }
+    }
+    result.converged = options.bounces >= 0 ? solver->iterations() == options.bounces
+                                            : solver->progress() <= tolerance;
+    progress.finish(solver->progressMeasure() + " " + formatNumber(solver->progress()) +
+                    (result.converged ? "" : " (not converged)"));
+    if (!refine || pass == options.refinePasses || !result.converged) break;
+    // Adaptive refinement: split where the solution jumps or a shadow boundary crosses, then let
+    // the new elements gather what was already shot and carry on shooting.
+    std::vector<double> luminance(mesh.elementCount());
+    for (int e = 0; e < mesh.elementCount(); ++e) luminance[e] = solver->solution()[e].luminance();
+    const std::vector<int> selected =
+        selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
+    if (selected.empty()) break;
+    const int before = mesh.elementCount();
+    const std::vector<int> changed = refineElements(*result.mesh, selected, refinement);
+    result.problem = makeProblem(result.scene, mesh);
+    analytic->meshChanged();
+    static_cast<ProgressiveSolver&>(*solver).elementsChanged(
+        changed, [&](int e, int s) { return analytic->elementToShooter(e, s); });
+    ++result.refinementPasses;
+    logInfo("refinement pass " + std::to_string(pass + 1) + ": " + std::to_string(selected.size()) +
+            " elements selected, " + std::to_string(before) + " → " + std::to_string(mesh.elementCount()) +
+            " elements");
+    if (mesh.elementCount() >= refinement.maxElements) {
+      note(result, "further refinement", "the element budget (--max-elements) is reached");
+      break;
     }
   }
-  result.converged = options.bounces >= 0 ? solver->iterations() == options.bounces
-                                          : solver->progress() <= tolerance;
-  progress.finish(solver->progressMeasure() + " " + formatNumber(solver->progress()) +
-                  (result.converged ? "" : " (not converged)"));
   const double solveAndRows = since(t);
   result.times.formFactors = analytic ? analytic->seconds() : cache.seconds();
   result.times.solve = std::max(0.0, solveAndRows - result.times.formFactors);

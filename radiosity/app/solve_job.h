@@ -36,6 +36,10 @@ struct SolveOptions {
   double patchArea = 0;        // analytic: largest shooting patch (scene units²); 0: 8 × max area
   int shadowRays = 16;         // analytic: visibility rays per receiver point and patch
   int receiverPoints = 3;      // analytic: 1 (centroid) or 3 (Gauss points) per element
+  double refineThreshold = 0;  // adaptive refinement: relative luminance jump that splits; 0: off
+  double minArea = 0;          // refinement: smallest element area; 0: max area / 16
+  int maxElements = 0;         // refinement: element budget; 0: 8 × the uniform mesh's count
+  int refinePasses = 4;        // refinement: solve–refine rounds
 };
 
 // Something the run decided not to do, and why (reported in the log and summary.json).
@@ -55,6 +59,8 @@ struct SolveResult {
   std::vector<Rgb> radiosity;  // B per element, W/m² (for scenes in metres)
   std::string solverName, progressMeasure;
   int iterations = 0;
+  int refinementPasses = 0;
+  int elementsBeforeRefinement = 0;
   double finalProgress = 0;    // residual or unshot fraction reached
   bool converged = false;
   double maxArea = 0;

@@ -21,12 +21,24 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 AnalyticPatchShots::AnalyticPatchShots(const PatchMesh& mesh, const RayCaster& rays,
                                        AnalyticOptions options)
-    : mesh_(mesh), rays_(rays), options_(options), rows_(mesh.shooterCount()),
-      partlyShadowed_(mesh.elementCount(), 0) {
+    : mesh_(mesh), rays_(rays), options_(options), rows_(mesh.shooterCount()) {
   if (options_.receiverPoints != 1 && options_.receiverPoints != 3)
     throw std::invalid_argument("receiver points must be 1 or 3");
   if (options_.shadowRays < 1) throw std::invalid_argument("shadow rays must be >= 1");
+  meshChanged();
+  for (int s = 0; s < mesh.shooterCount(); ++s) {
+    const auto c = mesh.shooterCorners(s);
+    const Eigen::Vector3d cross = (c[1] - c[0]).cross(c[2] - c[0]);
+    shooterArea_.push_back(0.5 * cross.norm());
+    shooterNormal_.push_back(cross.normalized());
+  }
+}
+
+void AnalyticPatchShots::meshChanged() {
+  const PatchMesh& mesh = mesh_;
   const int n = mesh.elementCount();
+  partlyShadowed_.assign(n, 0);
+  for (auto& row : rows_) row.reset();
   normals_.resize(n);
   centroids_.resize(n);
   receiverPoints_.resize(n);
@@ -37,12 +49,6 @@ AnalyticPatchShots::AnalyticPatchShots(const PatchMesh& mesh, const RayCaster& r
     // Degree-2 Gauss points (barycentric 2/3, 1/6, 1/6): interior, so never on a shared edge.
     for (int k = 0; k < 3; ++k)
       receiverPoints_[e][k] = (4.0 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6.0;
-  }
-  for (int s = 0; s < mesh.shooterCount(); ++s) {
-    const auto c = mesh.shooterCorners(s);
-    const Eigen::Vector3d cross = (c[1] - c[0]).cross(c[2] - c[0]);
-    shooterArea_.push_back(0.5 * cross.norm());
-    shooterNormal_.push_back(cross.normalized());
   }
 }
 
@@ -71,7 +77,9 @@ double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
     const double unoccluded = pointToPolygonFormFactor(x, n, polygon);
     if (unoccluded <= 0) continue;
     const Eigen::Vector3d origin = x + scale * n;
-    int visible = 0;
+    // Visibility over the part of the patch in front of x: points behind x's tangent plane are
+    // outside the clipped polygon the form factor already integrates over.
+    int visible = 0, inFront = 0;
     for (int r = 0; r < m; ++r) {
       double u = rng.uniform(), v = rng.uniform();
       if (r < g * g) {  // stratified over the shooter
@@ -79,13 +87,17 @@ double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
         v = ((r / g) + v) / g;
       }
       const Eigen::Vector3d target = uniformPointOnTriangle(source, u, v) + scale * ns;
+      if (n.dot(target - origin) <= 0) continue;
+      ++inFront;
       if (!rays_.occluded(origin, target - origin, 1.0 - 1e-6)) ++visible;
     }
-    raysCast_ += m;
-    if (visible > 0 && visible < m) partial = true;
-    sum += unoccluded * visible / m;
+    raysCast_ += inFront;
+    if (inFront == 0) continue;
+    if (visible > 0 && visible < inFront) partial = true;
+    sum += unoccluded * visible / inFront;
   }
-  if (partial) partlyShadowed_[receiver] = 1;  // benign race: every writer stores 1
+  // Benign race: every writer stores 1.
+  if (partial && (shadowCasters_.empty() || shadowCasters_[shooter])) partlyShadowed_[receiver] = 1;
   return sum / points;
 }
 

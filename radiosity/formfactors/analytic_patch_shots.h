@@ -34,6 +34,11 @@ class AnalyticPatchShots : public ShotRows {
  public:
   AnalyticPatchShots(const PatchMesh& mesh, const RayCaster& rays, AnalyticOptions options);
 
+  // After the mesh's elements were refined (shooters unchanged): refreshes the per-element data
+  // and forgets the cached rows, whose element indices are stale. The BVH need not change:
+  // bisection keeps the surfaces exactly where they were, and visibility needs no element ids.
+  void meshChanged();
+
   // F from element `receiver` to shooting patch `shooter`, visibility included.
   double elementToShooter(int receiver, int shooter) const;
 
@@ -52,7 +57,10 @@ class AnalyticPatchShots : public ShotRows {
   uint64_t raysCast() const { return raysCast_.load(); }
   int rowsComputed() const { return rowsComputed_; }
   double seconds() const { return seconds_; }
-  // Elements that saw some shooter only partly (a shadow boundary crosses them).
+  // Shooters whose shadows count for partlyShadowed() (typically those holding emitters);
+  // empty: every shooter.
+  void setShadowCasters(std::vector<char> shooters) { shadowCasters_ = std::move(shooters); }
+  // Elements that saw a shadow-casting shooter only partly (a shadow boundary crosses them).
   const std::vector<char>& partlyShadowed() const { return partlyShadowed_; }
 
  private:
@@ -66,6 +74,7 @@ class AnalyticPatchShots : public ShotRows {
   std::vector<std::unique_ptr<FormFactorRow>> rows_;
   mutable std::atomic<uint64_t> raysCast_{0};
   mutable std::vector<char> partlyShadowed_;
+  std::vector<char> shadowCasters_;
   int rowsComputed_ = 0;
   double seconds_ = 0;
 };

@@ -1,11 +1,16 @@
 #include "radiosity/solvers/progressive_solver.h"
 
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
 #include "radiosity/core/compensated_sum.h"
 
 namespace rad {
 
 ProgressiveSolver::ProgressiveSolver(const RadiosityProblem& problem, ShotRows& shots)
     : problem_(problem), shots_(shots), solution_(problem.emission), unshot_(shots.shooterCount()),
+      shot_(shots.shooterCount()), received_(shots.shooterCount()),
       emittedPower_(problem.emittedPower()) {
   for (int i = 0; i < problem.size(); ++i)
     unshot_[shots_.shooterOf(i)] += problem.emission[i] * problem.area[i];
@@ -19,7 +24,8 @@ void ProgressiveSolver::updateUnshotTotals() {
   double best = 0;
   nextShooter_ = -1;
   for (int s = 0; s < static_cast<int>(unshot_.size()); ++s) {
-    const double power = unshot_[s].sum();
+    // Magnitudes: after refinement a shooter may owe negative power (light to take back).
+    const double power = std::fabs(unshot_[s].r) + std::fabs(unshot_[s].g) + std::fabs(unshot_[s].b);
     total += power;
     if (power > best) {
       best = power;
@@ -34,6 +40,7 @@ void ProgressiveSolver::step() {
   const int shooter = nextShooter_;
   const Rgb power = unshot_[shooter];
   unshot_[shooter] = Rgb();
+  shot_[shooter] += power / shots_.shooterArea(shooter);
   const FormFactorRow& row = shots_.powerFractions(shooter);
   for (size_t k = 0; k < row.targets.size(); ++k) {
     const int j = row.targets[k];
@@ -42,6 +49,7 @@ void ProgressiveSolver::step() {
     const Rgb reflected = problem_.reflectance[j] * power * row.factor(k);
     solution_[j] += reflected / problem_.area[j];
     unshot_[shots_.shooterOf(j)] += reflected;
+    received_[shots_.shooterOf(j)] += reflected;
   }
   lastShooter_ = shooter;
   ++shotCount_;
@@ -66,6 +74,35 @@ std::vector<Rgb> ProgressiveSolver::withAmbient() const {
   }
   for (int i = 0; i < problem_.size(); ++i) out[i] += problem_.reflectance[i] * ambient;
   return out;
+}
+
+void ProgressiveSolver::elementsChanged(const std::vector<int>& changed,
+                                        const std::function<double(int, int)>& elementToShooter) {
+  solution_.resize(problem_.size());
+  std::vector<int> shotShooters;
+  for (int s = 0; s < static_cast<int>(shot_.size()); ++s)
+    if (shot_[s].maxComponent() > 0) shotShooters.push_back(s);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t k = r.begin(); k != r.end(); ++k) {
+      const int e = changed[k];
+      Rgb gathered;
+      for (int s : shotShooters) {
+        const double f = elementToShooter(e, s);
+        if (f > 0) gathered += f * shot_[s];
+      }
+      solution_[e] = problem_.emission[e] + problem_.reflectance[e] * gathered;
+    }
+  });
+  // Keep each shooter's books: its unshot power must match what its elements now reflect.
+  std::vector<Rgb> reflectedNow(shot_.size());
+  for (int e = 0; e < problem_.size(); ++e)
+    reflectedNow[shots_.shooterOf(e)] += (solution_[e] - problem_.emission[e]) * problem_.area[e];
+  for (size_t s = 0; s < shot_.size(); ++s) {
+    unshot_[s] += reflectedNow[s] - received_[s];
+    received_[s] = reflectedNow[s];
+  }
+  emittedPower_ = problem_.emittedPower();
+  updateUnshotTotals();
 }
 
 std::vector<Rgb> ProgressiveSolver::unshotPowerOfElements() const {

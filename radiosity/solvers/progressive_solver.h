@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/SparseCore>
+#include <functional>
 
 #include "radiosity/formfactors/shot_rows.h"
 #include "radiosity/solvers/radiosity_problem.h"
@@ -34,6 +35,14 @@ class ProgressiveSolver : public Solver {
   // Unshot power per element (W): each shooter's share, spread over its elements by area.
   std::vector<Rgb> unshotPowerOfElements() const;
   int lastShooter() const { return lastShooter_; }
+
+  // Continues after the receiving elements were refined (shooters unchanged): the problem now
+  // has more elements (the caller updated it), and each changed or new element gathers what all
+  // shots so far sent it, B_e = E_e + rho_e sum_s F_es S_s with S_s the radiosity shooter s has
+  // shot in total: exactly what it would hold had it existed from the start. Unshot power stays
+  // with the shooters, so shooting goes on where it was.
+  void elementsChanged(const std::vector<int>& changed,
+                       const std::function<double(int element, int shooter)>& elementToShooter);
   void setName(std::string name) { name_ = std::move(name); }
 
  private:
@@ -43,6 +52,8 @@ class ProgressiveSolver : public Solver {
   std::string name_ = "progressive";
   std::vector<Rgb> solution_;
   std::vector<Rgb> unshot_;  // per shooter, W
+  std::vector<Rgb> shot_;    // per shooter: radiosity shot so far, W/m²
+  std::vector<Rgb> received_;  // per shooter: reflected power its elements received so far, W
   int shotCount_ = 0;
   int lastShooter_ = -1;
   int nextShooter_ = -1;
