@@ -16,6 +16,7 @@ using CommandAction = std::function<void()>;
 
 void registerSolveCommand(CLI::App& app, CommandAction& run);
 void registerBakeCommand(CLI::App& app, CommandAction& run);
+void registerRenderCommand(CLI::App& app, CommandAction& run);
 
 // Common flags every command takes (--quiet).
 void addCommonFlags(CLI::App& command);

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   rad::CommandAction run;
   rad::registerSolveCommand(app, run);
   rad::registerBakeCommand(app, run);
+  rad::registerRenderCommand(app, run);
 
   try {
     app.parse(argc, argv);

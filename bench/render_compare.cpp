@@ -1,0 +1,60 @@
+// Compares renders for bench/render_error_vs_time.py (no numpy here, so EXR arithmetic in C++).
+//   render_compare rmse IMAGE.exr REFERENCE.exr     → relative RMSE sqrt(Σ(a−r)²/Σr²), mean ratio
+//   render_compare average A.exr B.exr OUT.exr      → OUT = (A+B)/2; prints the relative RMSE of
+//       OUT's noise, estimated as ½·rmse(A, B) (two independent renders of the same image)
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "radiosity/output/image_io.h"
+
+namespace {
+
+double relativeRmse(const rad::ImageRgb& a, const rad::ImageRgb& r) {
+  double diff2 = 0, ref2 = 0;
+  for (size_t p = 0; p < r.pixels.size(); ++p) {
+    const rad::Rgb d = a.pixels[p] - r.pixels[p];
+    diff2 += (d * d).sum();
+    ref2 += (r.pixels[p] * r.pixels[p]).sum();
+  }
+  return std::sqrt(diff2 / ref2);
+}
+
+double meanValue(const rad::ImageRgb& a) {
+  double s = 0;
+  for (const rad::Rgb& p : a.pixels) s += p.sum();
+  return s / (3.0 * a.pixels.size());
+}
+
+void requireSameSize(const rad::ImageRgb& a, const rad::ImageRgb& b) {
+  if (a.width != b.width || a.height != b.height) throw std::runtime_error("image sizes differ");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    if (mode == "rmse" && argc == 4) {
+      const rad::ImageRgb a = rad::readExr(argv[2]), r = rad::readExr(argv[3]);
+      requireSameSize(a, r);
+      std::printf("%.6f %.6f\n", relativeRmse(a, r), meanValue(a) / meanValue(r));
+      return 0;
+    }
+    if (mode == "average" && argc == 5) {
+      const rad::ImageRgb a = rad::readExr(argv[2]), b = rad::readExr(argv[3]);
+      requireSameSize(a, b);
+      rad::ImageRgb out(a.width, a.height);
+      for (size_t p = 0; p < a.pixels.size(); ++p)
+        out.pixels[p] = 0.5 * (a.pixels[p] + b.pixels[p]);
+      rad::writeExr(argv[4], out);
+      std::printf("%.6f\n", 0.5 * relativeRmse(a, b));
+      return 0;
+    }
+    std::fprintf(stderr, "usage: render_compare rmse IMAGE REF | average A B OUT\n");
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}

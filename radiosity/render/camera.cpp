@@ -1,0 +1,135 @@
+#include "radiosity/render/camera.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "radiosity/core/errors.h"
+
+namespace rad {
+namespace {
+
+Eigen::Vector3d readVector(const nlohmann::json& j, const std::string& key,
+                           const std::string& file) {
+  const auto& v = j.at(key);
+  if (!v.is_array() || v.size() != 3)
+    throw InputError(file, 0, "\"" + key + "\" must be an array of 3 numbers");
+  Eigen::Vector3d out;
+  for (int k = 0; k < 3; ++k) {
+    if (!v[k].is_number())
+      throw InputError(file, 0, "\"" + key + "\" must be an array of 3 numbers");
+    out[k] = v[k].get<double>();
+    if (!std::isfinite(out[k])) throw InputError(file, 0, "\"" + key + "\" is not finite");
+  }
+  return out;
+}
+
+double readNumber(const nlohmann::json& j, const std::string& key, const std::string& file) {
+  const auto& v = j.at(key);
+  if (!v.is_number()) throw InputError(file, 0, "\"" + key + "\" must be a number");
+  return v.get<double>();
+}
+
+int readInt(const nlohmann::json& j, const std::string& key, const std::string& file) {
+  const auto& v = j.at(key);
+  if (!v.is_number_integer()) throw InputError(file, 0, "\"" + key + "\" must be an integer");
+  return v.get<int>();
+}
+
+// nlohmann reports a byte offset; people want a line.
+int lineOfByte(const std::string& text, size_t byte) {
+  int line = 1;
+  for (size_t i = 0; i < std::min(byte, text.size()); ++i) line += text[i] == '\n';
+  return line;
+}
+
+}  // namespace
+
+void validateCamera(const Camera& c, const std::string& source) {
+  const Eigen::Vector3d forward = c.lookAt - c.position;
+  if (!(forward.norm() > 0)) throw InputError(source, 0, "camera look_at equals its position");
+  if (!(c.up.norm() > 0) || forward.normalized().cross(c.up.normalized()).norm() < 1e-9)
+    throw InputError(source, 0,
+                     "camera up must be non-zero and not parallel to the view direction");
+  if (!(c.vfovDegrees > 0 && c.vfovDegrees < 180))
+    throw InputError(source, 0, "vertical field of view must be in (0, 180) degrees");
+  if (c.width <= 0 || c.height <= 0 || c.width > 16384 || c.height > 16384)
+    throw InputError(source, 0, "image width and height must be in 1..16384");
+  if (!(c.lensRadius >= 0) || !std::isfinite(c.lensRadius))
+    throw InputError(source, 0, "lens radius must be >= 0");
+  if (c.lensRadius > 0 && !(c.focusDistance > 0))
+    throw InputError(source, 0, "a lens radius > 0 needs a focus distance > 0");
+}
+
+std::string cameraSidecarPath(const std::string& scenePath) {
+  std::string base = scenePath;
+  const size_t slash = base.find_last_of('/');
+  const size_t dot = base.find_last_of('.');
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) base.resize(dot);
+  return base + ".camera.json";
+}
+
+Camera loadCamera(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "cannot open camera file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(path, lineOfByte(text, e.byte), "malformed JSON: " + std::string(e.what()));
+  }
+  if (!j.is_object()) throw InputError(path, 1, "a camera file holds one JSON object");
+  static const char* known[] = {"position",     "look_at",        "up",
+                                "vfov_degrees", "width",          "height",
+                                "lens_radius",  "focus_distance", "comment"};
+  for (const auto& item : j.items()) {
+    bool ok = false;
+    for (const char* k : known) ok = ok || item.key() == k;
+    if (!ok) throw InputError(path, 0, "unknown camera key \"" + item.key() + "\"");
+  }
+  for (const char* key : {"position", "look_at", "up", "vfov_degrees", "width", "height"})
+    if (!j.contains(key))
+      throw InputError(path, 0, std::string("missing camera key \"") + key + "\"");
+  Camera c;
+  c.position = readVector(j, "position", path);
+  c.lookAt = readVector(j, "look_at", path);
+  c.up = readVector(j, "up", path);
+  c.vfovDegrees = readNumber(j, "vfov_degrees", path);
+  c.width = readInt(j, "width", path);
+  c.height = readInt(j, "height", path);
+  if (j.contains("lens_radius")) c.lensRadius = readNumber(j, "lens_radius", path);
+  if (j.contains("focus_distance")) c.focusDistance = readNumber(j, "focus_distance", path);
+  validateCamera(c, path);
+  return c;
+}
+
+CameraRays::CameraRays(const Camera& camera) : camera_(camera) {
+  forward_ = (camera.lookAt - camera.position).normalized();
+  right_ = forward_.cross(camera.up).normalized();
+  up_ = right_.cross(forward_);
+  tanHalfY_ = std::tan(0.5 * camera.vfovDegrees * M_PI / 180.0);
+  tanHalfX_ = tanHalfY_ * camera.width / camera.height;
+}
+
+void CameraRays::generate(double px, double py, double lu, double lv, Eigen::Vector3d& origin,
+                          Eigen::Vector3d& direction) const {
+  const double sx = (2.0 * px / camera_.width - 1.0) * tanHalfX_;
+  const double sy = (1.0 - 2.0 * py / camera_.height) * tanHalfY_;
+  direction = (forward_ + sx * right_ + sy * up_).normalized();
+  origin = camera_.position;
+  if (camera_.lensRadius > 0) {
+    // Thin lens: every ray through the pixel meets the pinhole ray on the plane of focus.
+    const double cosTheta = direction.dot(forward_);
+    const Eigen::Vector3d focus = origin + direction * (camera_.focusDistance / cosTheta);
+    const double r = camera_.lensRadius * std::sqrt(lu), phi = 2 * M_PI * lv;
+    origin += r * std::cos(phi) * right_ + r * std::sin(phi) * up_;
+    direction = (focus - origin).normalized();
+  }
+}
+
+}  // namespace rad

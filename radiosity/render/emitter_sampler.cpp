@@ -1,0 +1,44 @@
+#include "radiosity/render/emitter_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rad {
+
+EmitterSampler::EmitterSampler(const Scene& scene, const PatchMesh& mesh)
+    : mesh_(mesh), pdfArea_(mesh.elementCount(), 0.0), radiance_(mesh.elementCount()) {
+  double total = 0;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const Rgb ke = scene.materials[mesh.material(e)].emission;
+    radiance_[e] = ke;
+    const double power = mesh.area(e) * ke.sum();
+    if (!(power > 0)) continue;
+    elements_.push_back(e);
+    total += power;
+    cdf_.push_back(total);
+  }
+  for (size_t k = 0; k < elements_.size(); ++k) {
+    cdf_[k] /= total;
+    const int e = elements_[k];
+    pdfArea_[e] = radiance_[e].sum() / total;  // (A·Ke/total) · (1/A)
+  }
+  if (!cdf_.empty()) cdf_.back() = 1.0;
+}
+
+EmitterSample EmitterSampler::sample(double u0, double u1, double u2) const {
+  EmitterSample s;
+  if (elements_.empty()) return s;
+  const size_t k = std::min<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u0) - cdf_.begin(),
+                                    elements_.size() - 1);
+  s.element = elements_[k];
+  const auto c = mesh_.corners(s.element);
+  // Uniform point on a triangle (square-root warp).
+  const double r = std::sqrt(u1);
+  s.position = (1 - r) * c[0] + r * (1 - u2) * c[1] + r * u2 * c[2];
+  s.normal = mesh_.normal(s.element);
+  s.radiance = radiance_[s.element];
+  s.pdfArea = pdfArea_[s.element];
+  return s;
+}
+
+}  // namespace rad

@@ -1,0 +1,151 @@
+#include "radiosity/render/final_gather.h"
+
+#include <cmath>
+#include <string>
+
+#include "radiosity/render/scattering.h"
+#include "radiosity/render/stratified.h"
+
+namespace rad {
+
+FinalGather::FinalGather(const RenderScene& scene, const std::vector<Rgb>& radiosity,
+                         FinalGatherOptions options)
+    : scene_(scene), options_(options), interpolation_(scene.mesh()) {
+  const int n = scene.mesh().elementCount();
+  radiance_.resize(n);
+  reflected_.resize(n);
+  std::vector<Eigen::Vector3d> perElement(n);
+  for (int e = 0; e < n; ++e) {
+    const Rgb b = radiosity.at(e);
+    const Rgb emitted = M_PI * scene.material(e).emission;
+    radiance_[e] = b / M_PI;
+    // B ≥ E holds exactly for a converged solution; a solver stopped early never goes below E.
+    reflected_[e] = (b - emitted) / M_PI;
+    for (int c = 0; c < 3; ++c) reflected_[e][c] = std::max(0.0, reflected_[e][c]);
+    perElement[e] = {radiance_[e].r, radiance_[e].g, radiance_[e].b};
+  }
+  if (options_.gatherRays == 0) vertexRadiance_ = interpolation_.interpolate(perElement);
+}
+
+std::string FinalGather::name() const {
+  return options_.gatherRays == 0
+             ? "radiosity (interpolated, no gather)"
+             : "radiosity (final gather, " + std::to_string(options_.gatherRays) + " rays)";
+}
+
+Rgb FinalGather::interpolatedRadiance(const SurfaceHit& hit) const {
+  const auto& t = interpolation_.triangle(hit.element);
+  const Eigen::Vector3d v = (1 - hit.u - hit.v) * vertexRadiance_[t[0]] +
+                            hit.u * vertexRadiance_[t[1]] + hit.v * vertexRadiance_[t[2]];
+  return {v.x(), v.y(), v.z()};
+}
+
+// Multiple importance sampling (power heuristic, one light and one gather sample per pair): near
+// corners the emitter-area estimator alone is heavy-tailed (cos·cos/d² grows without bound),
+// and the cosine-sampled gather rays cover exactly those directions well.
+double FinalGather::misWeight(double pdfA, double pdfB) {
+  const double a = pdfA * pdfA, b = pdfB * pdfB;
+  return a / (a + b);
+}
+
+Rgb FinalGather::directLight(const SurfaceHit& hit, Rng& rng, RayCounts& counts) const {
+  const EmitterSampler& lights = scene_.emitters();
+  const int n = options_.gatherRays;
+  Rgb sum;
+  for (int k = 0; k < n; ++k) {
+    const EmitterSample s = lights.sample(rng.uniform(), rng.uniform(), rng.uniform());
+    if (s.element < 0 || s.element == hit.element) continue;
+    Eigen::Vector3d w = s.position - hit.position;
+    const double d2 = w.squaredNorm();
+    w /= std::sqrt(d2);
+    const double cosX = hit.normal.dot(w), cosY = -s.normal.dot(w);
+    if (cosX <= 0 || cosY <= 0) continue;  // behind the receiver, or the emitter's back
+    ++counts.shadow;
+    if (scene_.occluded(scene_.spawn(hit, w), s.position)) continue;
+    const double lightPdf = s.pdfArea * d2 / cosY;  // per solid angle
+    sum += s.radiance * (cosX / lightPdf * misWeight(lightPdf, cosX / M_PI));
+  }
+  return sum / (n * M_PI);  // irradiance / π: times ρ it is the reflected radiance
+}
+
+Rgb FinalGather::gatherLight(const SurfaceHit& hit, Rng& rng, RayCounts& counts) const {
+  thread_local std::vector<std::pair<double, double>> strata;
+  const int n = options_.gatherRays;
+  nRooks(n, rng, strata);
+  Rgb sum;
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector3d d = cosineDirection(hit.normal, strata[k].first, strata[k].second);
+    sum += secondaryRadiance(hit, d, rng, counts);
+  }
+  return sum /
+         n;  // cosine-weighted mean of incoming radiance: times ρ it is the reflected radiance
+}
+
+Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direction, Rng& rng,
+                                   RayCounts& counts) const {
+  Eigen::Vector3d origin = scene_.spawn(from, direction);
+  const double bsdfPdf = from.normal.dot(direction) / M_PI;
+  Rgb weight = Rgb::all(1.0);
+  bool viaSpecular = false;
+  for (int depth = 0;; ++depth) {
+    const SurfaceHit hit = scene_.intersect(origin, direction);
+    ++counts.closest;
+    if (!hit.hit()) return {};
+    if (hit.material->isSpecular()) {
+      if (depth >= options_.maxSpecularDepth) return {};
+      const double u = hit.material->kind == SurfaceKind::Dielectric ? rng.uniform() : 0.0;
+      const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
+      if (!step.alive) return {};
+      weight = weight * step.weight;
+      origin = step.origin;
+      direction = step.direction;
+      viaSpecular = true;
+      continue;
+    }
+    if (!hit.front) return {};  // back faces absorb, as in the radiosity pass
+    // Through mirrors and glass (E S+ D) shadow rays cannot reach the emitter: take all of B/π.
+    if (viaSpecular) return weight * radiance_[hit.element];
+    // Directly: the solution's reflected part, plus the emission's share of the MIS pair.
+    Rgb value = reflected_[hit.element];
+    if (hit.material->isEmitter()) {
+      const double cosY = -hit.normal.dot(direction);
+      const double lightPdf =
+          scene_.emitters().pdfArea(hit.element) * hit.distance * hit.distance / cosY;
+      value += hit.material->emission * misWeight(bsdfPdf, lightPdf);
+    }
+    return weight * value;
+  }
+}
+
+Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d& startDirection,
+                          Rng& rng, RayCounts& counts) const {
+  Eigen::Vector3d origin = startOrigin, direction = startDirection;
+  Rgb weight = Rgb::all(1.0);
+  for (int depth = 0;; ++depth) {
+    const SurfaceHit hit = scene_.intersect(origin, direction);
+    ++(depth == 0 ? counts.camera : counts.closest);
+    if (!hit.hit()) return {};
+    const Material& m = *hit.material;
+    if (m.isSpecular()) {
+      if (depth >= options_.maxSpecularDepth) return {};
+      const double u = m.kind == SurfaceKind::Dielectric ? rng.uniform() : 0.0;
+      const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
+      if (!step.alive) return {};
+      weight = weight * step.weight;
+      origin = step.origin;
+      direction = step.direction;
+      continue;
+    }
+    if (!hit.front) return {};
+    if (options_.gatherRays == 0) return weight * interpolatedRadiance(hit);
+    if (m.diffuse.maxComponent() == 0) {
+      // Nothing to reflect (a black emitter, say): its radiance is Ke, no gather needed.
+      ++counts.gathersSkipped;
+      return weight * m.emission;
+    }
+    const Rgb reflected = directLight(hit, rng, counts) + gatherLight(hit, rng, counts);
+    return weight * (m.emission + m.diffuse * reflected);
+  }
+}
+
+}  // namespace rad

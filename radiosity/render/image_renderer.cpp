@@ -1,0 +1,67 @@
+#include "radiosity/render/image_renderer.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+
+#include "radiosity/core/progress.h"
+#include "radiosity/render/stratified.h"
+
+namespace rad {
+
+RenderOutput renderImage(const Camera& camera, const Integrator& integrator,
+                         const RenderSettings& settings) {
+  if (settings.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be >= 1");
+  const auto start = std::chrono::steady_clock::now();
+  const CameraRays rays(camera);
+  RenderOutput out;
+  out.image = ImageRgb(camera.width, camera.height);
+  out.variance = ImageRgb(camera.width, camera.height);
+  const int n = settings.samplesPerPixel;
+  std::unique_ptr<Progress> progress;
+  if (settings.showProgress)
+    progress = std::make_unique<Progress>("render (" + integrator.name() + ")",
+                                          static_cast<uint64_t>(camera.height), "rows");
+  tbb::combinable<RayCounts> counts;
+
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, camera.height), [&](const tbb::blocked_range<int>& r) {
+        RayCounts& local = counts.local();
+        std::vector<std::pair<double, double>> pixelStrata, lensStrata;
+        for (int y = r.begin(); y < r.end(); ++y) {
+          for (int x = 0; x < camera.width; ++x) {
+            Rng rng(
+                streamKey(settings.seed, static_cast<uint64_t>(y) * camera.width + x, 0x52454e44));
+            nRooks(n, rng, pixelStrata);
+            nRooks(n, rng, lensStrata);
+            Rgb sum, sumSquares;
+            for (int s = 0; s < n; ++s) {
+              Eigen::Vector3d origin, direction;
+              rays.generate(x + pixelStrata[s].first, y + pixelStrata[s].second,
+                            lensStrata[s].first, lensStrata[s].second, origin, direction);
+              const Rgb L = integrator.radiance(origin, direction, rng, local);
+              sum += L;
+              sumSquares += L * L;
+            }
+            const Rgb mean = sum / n;
+            out.image.at(x, y) = mean;
+            if (n > 1) {
+              Rgb var = (sumSquares - mean * sum) / (static_cast<double>(n) * (n - 1));
+              for (int c = 0; c < 3; ++c) var[c] = std::max(0.0, var[c]);
+              out.variance.at(x, y) = var;
+            }
+          }
+          if (progress) progress->advance();
+        }
+      });
+  out.rays = counts.combine([](RayCounts a, const RayCounts& b) { return a += b; });
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (progress) progress->finish(std::to_string(out.rays.total()) + " rays");
+  return out;
+}
+
+}  // namespace rad

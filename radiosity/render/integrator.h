@@ -1,0 +1,23 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "radiosity/core/rgb.h"
+#include "radiosity/core/rng.h"
+#include "radiosity/render/render_scene.h"
+
+namespace rad {
+
+// Estimates the radiance (W·m⁻²·sr⁻¹) arriving at `origin` from `direction` (unit): one
+// sample of a Monte Carlo estimator, or an exact lookup. Thread-safe; all randomness comes from
+// `rng`, so a pixel's stream alone fixes its value.
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
+                       RayCounts& counts) const = 0;
+  virtual std::string name() const = 0;
+};
+
+}  // namespace rad

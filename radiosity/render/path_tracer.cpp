@@ -1,0 +1,105 @@
+#include "radiosity/render/path_tracer.h"
+
+#include <cmath>
+
+#include "radiosity/render/scattering.h"
+
+namespace rad {
+namespace {
+
+double powerHeuristic(double pdfA, double pdfB) {
+  const double a = pdfA * pdfA, b = pdfB * pdfB;
+  return a / (a + b);
+}
+
+// A specular chain longer than this plays Russian roulette at every further step, so glass
+// with total internal reflection cannot trap a path forever (and no fixed cut-off biases it).
+constexpr int kSpecularRouletteAfter = 8;
+
+}  // namespace
+
+PathTracer::PathTracer(const RenderScene& scene, PathTracerOptions options)
+    : scene_(scene), options_(options) {}
+
+Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d& startDirection,
+                         Rng& rng, RayCounts& counts) const {
+  const EmitterSampler& lights = scene_.emitters();
+  Eigen::Vector3d origin = startOrigin, direction = startDirection;
+  Rgb result, throughput = Rgb::all(1.0);
+  bool specularBefore = true;  // the camera (or a mirror) cannot sample emitters itself
+  double bsdfPdf = 0;          // solid-angle density of the last diffuse bounce
+  int diffuseBounces = 0, specularRun = 0;
+  bool first = true;
+
+  for (;;) {
+    const SurfaceHit hit = scene_.intersect(origin, direction);
+    ++(first ? counts.camera : counts.closest);
+    first = false;
+    if (!hit.hit()) break;
+    const Material& m = *hit.material;
+
+    if (m.isSpecular()) {
+      const double u = m.kind == SurfaceKind::Dielectric ? rng.uniform() : 0.0;
+      const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
+      if (!step.alive) break;
+      throughput = throughput * step.weight;
+      origin = step.origin;
+      direction = step.direction;
+      specularBefore = true;
+      if (++specularRun > kSpecularRouletteAfter) {
+        const double q = std::min(0.95, throughput.maxComponent());
+        if (rng.uniform() >= q) break;
+        throughput *= 1.0 / q;
+      }
+      continue;
+    }
+    specularRun = 0;
+    if (!hit.front) break;  // back faces are black, as in the radiosity pass
+
+    if (m.isEmitter()) {
+      if (specularBefore) {
+        result += throughput * m.emission;
+      } else {
+        // The light could have been sampled here by NEE too: weigh by MIS.
+        const double cosY = -hit.normal.dot(direction);
+        const double lightPdf = lights.pdfArea(hit.element) * hit.distance * hit.distance / cosY;
+        result += throughput * m.emission * powerHeuristic(bsdfPdf, lightPdf);
+      }
+    }
+    const Rgb rho = m.diffuse;
+    if (rho.maxComponent() == 0) break;
+
+    // Next-event estimation: one point on an emitter, weighed against the cosine bounce.
+    const EmitterSample s = lights.sample(rng.uniform(), rng.uniform(), rng.uniform());
+    if (s.element >= 0 && s.element != hit.element) {
+      Eigen::Vector3d w = s.position - hit.position;
+      const double d2 = w.squaredNorm();
+      w /= std::sqrt(d2);
+      const double cosX = hit.normal.dot(w), cosY = -s.normal.dot(w);
+      if (cosX > 0 && cosY > 0) {
+        ++counts.shadow;
+        if (!scene_.occluded(scene_.spawn(hit, w), s.position)) {
+          const double lightPdf = s.pdfArea * d2 / cosY;
+          const double weight = powerHeuristic(lightPdf, cosX / M_PI);
+          result += throughput * rho * s.radiance * (cosX / M_PI / lightPdf * weight);
+        }
+      }
+    }
+
+    // Cosine-weighted bounce: f·cos/pdf = ρ.
+    direction = cosineDirection(hit.normal, rng.uniform(), rng.uniform());
+    bsdfPdf = hit.normal.dot(direction) / M_PI;
+    if (!(bsdfPdf > 0)) break;
+    origin = scene_.spawn(hit, direction);
+    throughput = throughput * rho;
+    specularBefore = false;
+    if (++diffuseBounces >= options_.rouletteAfter) {
+      const double q = std::min(0.95, throughput.maxComponent());
+      if (rng.uniform() >= q) break;
+      throughput *= 1.0 / q;
+    }
+  }
+  return result;
+}
+
+}  // namespace rad

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+#include "radiosity/core/rgb.h"
+#include "radiosity/render/render_scene.h"
+#include "radiosity/scene/material.h"
+
+namespace rad {
+
+// Cosine-weighted direction around unit `n` (pdf cosθ/π): a uniform disc point (r = √u1)
+// lifted to the hemisphere (Malley), in a branch-free orthonormal basis (Duff et al. 2017).
+inline Eigen::Vector3d cosineDirection(const Eigen::Vector3d& n, double u1, double u2) {
+  const double sign = std::copysign(1.0, n.z());
+  const double a = -1.0 / (sign + n.z()), b = n.x() * n.y() * a;
+  const Eigen::Vector3d t(1 + sign * n.x() * n.x() * a, sign * b, -sign * n.x());
+  const Eigen::Vector3d s(b, sign + n.y() * n.y() * a, -n.y());
+  const double r = std::sqrt(u1), phi = 2 * M_PI * u2;
+  const double z = std::sqrt(std::max(0.0, 1 - u1));
+  return (r * std::cos(phi) * t + r * std::sin(phi) * s + z * n).normalized();
+}
+
+inline Eigen::Vector3d reflect(const Eigen::Vector3d& d, const Eigen::Vector3d& n) {
+  return d - 2 * d.dot(n) * n;
+}
+
+// Unpolarised Fresnel reflectance of a dielectric interface, light going from index etaI to
+// etaT with cosThetaI ≥ 0 on the incident side; 1 under total internal reflection.
+inline double fresnelDielectric(double cosThetaI, double etaI, double etaT) {
+  const double sinT = etaI / etaT * std::sqrt(std::max(0.0, 1 - cosThetaI * cosThetaI));
+  if (sinT >= 1) return 1;
+  const double cosT = std::sqrt(std::max(0.0, 1 - sinT * sinT));
+  const double rs = (etaI * cosThetaI - etaT * cosT) / (etaI * cosThetaI + etaT * cosT);
+  const double rp = (etaT * cosThetaI - etaI * cosT) / (etaT * cosThetaI + etaI * cosT);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// One step along a specular chain: the ray leaving a mirror or glass hit and the factor the
+// path's throughput takes. `u` chooses between Fresnel reflection and refraction at glass.
+struct SpecularStep {
+  bool alive = false;  // false: absorbed (the back of a mirror)
+  Eigen::Vector3d origin, direction;
+  Rgb weight;
+};
+
+inline SpecularStep scatterSpecular(const RenderScene& scene, const SurfaceHit& hit,
+                                    const Eigen::Vector3d& direction, double u) {
+  SpecularStep step;
+  const Material& m = *hit.material;
+  if (m.kind == SurfaceKind::Mirror) {
+    if (!hit.front) return step;  // one-sided like every other surface
+    step.direction = reflect(direction, hit.normal);
+    step.weight = m.specular;
+  } else {
+    // Dielectric: the front side is outside (index 1), the back side inside (index Ni).
+    const bool entering = hit.front;
+    const Eigen::Vector3d n = entering ? hit.normal : Eigen::Vector3d(-hit.normal);
+    const double etaI = entering ? 1.0 : m.ior, etaT = entering ? m.ior : 1.0;
+    const double cosI = -direction.dot(n);
+    const double f = fresnelDielectric(cosI, etaI, etaT);
+    if (u < f) {  // reflect with probability F: the weight F/F is 1
+      step.direction = reflect(direction, n);
+      step.weight = Rgb::all(1.0);
+    } else {  // refract with probability 1−F: weight Tf·(1−F)/(1−F), radiance scaled by (ηi/ηt)²
+      const double eta = etaI / etaT;
+      const double cosT = std::sqrt(std::max(0.0, 1 - eta * eta * (1 - cosI * cosI)));
+      step.direction = (eta * direction + (eta * cosI - cosT) * n).normalized();
+      step.weight = m.transmittance * (eta * eta);
+    }
+  }
+  step.origin = scene.spawn(hit, step.direction);
+  step.alive = step.weight.maxComponent() > 0;
+  return step;
+}
+
+}  // namespace rad

@@ -1,0 +1,98 @@
+// Furnace: a camera inside a closed box with uniform reflectance ρ and uniform emission Ke sees
+// L = Ke/(1−ρ) in every pixel (REFERENCES.md, enclosure tests): Ke = 1, ρ = 0.5 → 2 W·m⁻²·sr⁻¹.
+//
+// Final gather: the gather rays read (B−E)/π, which a converged solve makes uniform (every
+// form-factor row of a closed box sums to 1, so B = E/(1−ρ) on every element to the solver's
+// tolerance); cosine-weighted gather rays then all return the same value and carry no noise.
+// The only noise is next-event estimation's (area sampling of the emitters), which each pixel's
+// own sample variance measures. The path tracer's noise (NEE, MIS, Russian roulette) is likewise
+// measured per pixel. Each pixel must lie within 5σ (5σ for 3·256 values: a false alarm has
+// probability below 1e-3 for the whole image), plus the solver tolerance for the gather.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "radiosity/render/final_gather.h"
+#include "radiosity/render/image_renderer.h"
+#include "radiosity/render/path_tracer.h"
+#include "tests/render/render_fixture.h"
+
+namespace rad {
+namespace {
+
+constexpr double kExpected = 1.0 / (1.0 - 0.5);  // Ke / (1 − ρ)
+
+Camera furnaceCamera() {
+  Camera c;
+  c.position = {0.5, 0.45, 0.3};
+  c.lookAt = {0.7, 0.6, 1.0};
+  c.vfovDegrees = 100;  // sees four faces and their edges
+  c.width = c.height = 16;
+  return c;
+}
+
+void expectFurnace(const RenderOutput& out, double extraTolerance) {
+  double sum = 0, variance = 0;
+  int n = 0;
+  for (size_t p = 0; p < out.image.pixels.size(); ++p)
+    for (int c = 0; c < 3; ++c) {
+      const double v = out.image.pixels[p][c], sigma = std::sqrt(out.variance.pixels[p][c]);
+      ASSERT_GT(sigma, 0) << "pixel " << p;  // a noise estimate is needed for the tolerance
+      EXPECT_NEAR(v, kExpected, 5 * sigma + extraTolerance) << "pixel " << p << " channel " << c;
+      sum += v;
+      variance += out.variance.pixels[p][c];
+      ++n;
+    }
+  // The image mean: 4σ of the mean of all pixels.
+  EXPECT_NEAR(sum / n, kExpected, 4 * std::sqrt(variance) / n + extraTolerance);
+}
+
+SolveOptions furnaceSolve() {
+  SolveOptions o;
+  o.solver = SolverKind::GaussSeidel;  // solves the gathering system itself: B uniform to 1e-7
+  o.tolerance = 1e-7;
+  o.targetElements = 300;
+  o.raysPerElement = 256;
+  return o;
+}
+
+TEST(RenderFurnace, FinalGatherSeesKeOverOneMinusRhoEverywhere) {
+  auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
+                                   furnaceSolve());
+  const FinalGather gather(*s->view, s->solved.radiosity, {16});
+  RenderSettings settings;
+  settings.samplesPerPixel = 16;
+  settings.showProgress = false;
+  const RenderOutput out = renderImage(furnaceCamera(), gather, settings);
+  // Relative residual 1e-7 bounds each element's error far below this.
+  expectFurnace(out, 1e-5);
+}
+
+TEST(RenderFurnace, InterpolatedRadiosityIsExactWithoutNoise) {
+  auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
+                                   furnaceSolve());
+  const FinalGather preview(*s->view, s->solved.radiosity, {0});
+  RenderSettings settings;
+  settings.samplesPerPixel = 2;
+  settings.showProgress = false;
+  const RenderOutput out = renderImage(furnaceCamera(), preview, settings);
+  for (const Rgb& p : out.image.pixels)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], kExpected, 1e-5);
+}
+
+TEST(RenderFurnace, PathTracerSeesKeOverOneMinusRhoEverywhere) {
+  auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
+                                   furnaceSolve());
+  const PathTracer tracer(*s->view);
+  RenderSettings settings;
+  // Russian roulette makes rare long paths carry large weights: with few samples per pixel the
+  // sample variance under-estimates the true one, so enough samples that survivors are common.
+  settings.samplesPerPixel = 512;
+  settings.showProgress = false;
+  settings.seed = 7;
+  const RenderOutput out = renderImage(furnaceCamera(), tracer, settings);
+  expectFurnace(out, 0);
+}
+
+}  // namespace
+}  // namespace rad
