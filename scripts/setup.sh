@@ -16,6 +16,7 @@ packages=(
   libstb-dev           # PNG writer (stb_image_write)
   libgtest-dev         # tests
   libtinygltf-dev      # glTF 2.0 export (radiosity bake)
+  libvtk9-dev xvfb xauth # viewer (radiosity view, solution.vtp); Xvfb for off-screen screenshots
 )
 
 # The Khronos glTF validator for the bake tests (npm, pinned by tools/gltf-validator/package-lock.json),

@@ -12,6 +12,9 @@ int main(int argc, char** argv) {
   rad::registerSolveCommand(app, run);
   rad::registerBakeCommand(app, run);
   rad::registerRenderCommand(app, run);
+#ifdef RADIOSITY_HAS_VIEWER
+  rad::registerViewCommand(app, run);
+#endif
 
   try {
     app.parse(argc, argv);

@@ -42,6 +42,8 @@ void note(SolveResult& result, std::string what, std::string why) {
   result.skipped.push_back({std::move(what), std::move(why)});
 }
 
+}  // namespace
+
 int defaultMaxIterations(SolverKind kind, int elements) {
   switch (kind) {
     case SolverKind::Progressive:
@@ -66,8 +68,6 @@ std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem) {
   }
   return multiplier;
 }
-
-}  // namespace
 
 FormFactorMethod parseFormFactorMethod(const std::string& name) {
   if (name == "hemisphere") return FormFactorMethod::Hemisphere;

@@ -79,6 +79,12 @@ SolveResult runSolve(const SolveOptions& options);
 // Meshes, computes form factors and solves an already loaded scene (options.scenePath unused).
 SolveResult solveScene(Scene scene, const SolveOptions& options);
 
+// Rays per emitter row relative to an average row: about the element's share of the emitted
+// power times the element count, between 1 and 64.
+std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem);
+// The iteration budget a solver gets when --max-iterations is not given.
+int defaultMaxIterations(SolverKind kind, int elements);
+
 // Mirror and glass behaviour per element for extended form factors.
 std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMesh& mesh);
 

@@ -11,6 +11,9 @@
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/output/tone_map.h"
 #include "radiosity/output/vertex_colors_ply.h"
+#ifdef RADIOSITY_HAS_VIEWER
+#include "viewer/solution_vtp.h"
+#endif
 
 namespace rad {
 namespace {
@@ -93,6 +96,18 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   const ToneMap toneMap = ToneMap::autoExposure(elementRadiance, result.problem.area);
   AtomicFile ply((dir / "vertex_colors.ply").string(), /*binary=*/true);
   writeVertexColorsPly(ply.stream(), interpolation, mesh, vertexRadiance, toneMap);
+  std::vector<AtomicFile*> files = {&csv, &ply};
+#ifdef RADIOSITY_HAS_VIEWER
+  // ParaView-ready solution.vtp (the VTK viewer's format), committed with the others below.
+  std::vector<Rgb> unshot(result.radiosity.size());
+  for (size_t e = 0; e < unshot.size(); ++e) {
+    const Eigen::Vector3d u = mesh.unshot(static_cast<int>(e));
+    unshot[e] = {u.x(), u.y(), u.z()};
+  }
+  AtomicFile vtp((dir / "solution.vtp").string(), /*binary=*/true);
+  writeSolutionVtp(vtp.stream(), mesh, result.radiosity, unshot, toneMap, options.scenePath);
+  files.push_back(&vtp);
+#endif
 
   result.times.output = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.times.total += result.times.output;
@@ -100,7 +115,8 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   summary.stream() << summaryJson(options, result, toneMap.exposure).dump(2) << "\n";
 
   // Only once every file is complete on disk do they take their final names.
-  commitAll({&csv, &ply, &summary});
+  files.push_back(&summary);
+  commitAll(files);
 }
 
 }  // namespace

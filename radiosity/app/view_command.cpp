@@ -1,0 +1,268 @@
+// `radiosity view SCENE.obj | DIR`: the solution in a VTK window (or a PNG with --screenshot),
+// and the solver behind it, which the viewer's keys step live.
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <regex>
+
+#include "radiosity/app/commands.h"
+#include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
+#include "radiosity/formfactors/analytic_patch_shots.h"
+#include "radiosity/formfactors/form_factor_cache.h"
+#include "radiosity/formfactors/hemisphere_form_factors.h"
+#include "radiosity/solvers/gathering_solvers.h"
+#include "radiosity/solvers/progressive_solver.h"
+#include "radiosity/visibility/ray_caster.h"
+#include "viewer/solution_polydata.h"
+#include "viewer/solution_viewer.h"
+#include "viewer/solution_vtp.h"
+
+namespace rad {
+namespace {
+
+// The same ray budget per row as solveScene gives (emitters get rays by their share of the
+// power), so the rows drawn and stepped here are the rows the solve used.
+// The solver of a finished solve, rebuilt over its mesh and problem (as solveScene builds it) so
+// the viewer can replay and step it. Rows are cached, so restarting costs no rays.
+class ViewerSolve final : public LiveSolution {
+ public:
+  ViewerSolve(const SolveResult& result, const SolveOptions& options)
+      : result_(result),
+        options_(options),
+        rays_(*result.mesh),
+        method_(*result.mesh, rays_,
+                {options.raysPerElement, options.seed, emitterRayMultipliers(result.problem),
+                 result.scene.hasSpecular() ? specularSurfaces(result.scene, *result.mesh)
+                                            : std::vector<SpecularSurface>()}),
+        cache_(method_) {
+    const int n = result.mesh->elementCount();
+    tolerance_ = options.tolerance;
+    // The budgets solveScene uses by default.
+    maxIterations_ = options.maxIterations > 0 ? options.maxIterations : defaultMaxIterations(options.solver, n);
+    if (options.solver == SolverKind::Jacobi && options.bounces >= 0)
+      maxIterations_ = options.bounces, tolerance_ = 0;
+    if (options.formFactors == FormFactorMethod::Analytic)
+      analytic_ = std::make_unique<AnalyticPatchShots>(
+          *result.mesh, rays_,
+          AnalyticOptions{options.receiverPoints, options.shadowRays, options.seed});
+    if (options.solver != SolverKind::Progressive) {
+      gather_ =
+          analytic_ ? analytic_->gatheringMatrix(nullptr) : gatherMatrix(result.problem, cache_);
+      if (options.solver == SolverKind::Southwell)
+        columns_ = std::make_unique<GatheringColumns>(result.problem, gather_);
+    }
+    restart();
+  }
+
+  std::vector<Rgb> radiosity(bool withAmbient) const override {
+    const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver_.get());
+    return withAmbient && shooting ? shooting->withAmbient() : solver_->solution();
+  }
+  std::vector<Rgb> unshot() const override {
+    const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver_.get());
+    return shooting ? shooting->unshotPowerOfElements() : std::vector<Rgb>(result_.problem.size());
+  }
+  void step() override {
+    if (converged()) return;
+    solver_->step();
+    history_.push_back(solver_->progress());
+  }
+  void restart() override {
+    const RadiosityProblem& p = result_.problem;
+    switch (options_.solver) {
+      case SolverKind::Progressive:
+        solver_ = std::make_unique<ProgressiveSolver>(
+            p, analytic_ ? static_cast<ShotRows&>(*analytic_) : cache_);
+        break;
+      case SolverKind::Southwell:
+        solver_ = std::make_unique<ProgressiveSolver>(p, *columns_);
+        static_cast<ProgressiveSolver&>(*solver_).setName("southwell");
+        break;
+      case SolverKind::Jacobi:
+        solver_ = std::make_unique<JacobiSolver>(p, gather_);
+        break;
+      case SolverKind::GaussSeidel:
+        solver_ = std::make_unique<GaussSeidelSolver>(p, gather_);
+        break;
+    }
+    history_ = {solver_->progress()};
+  }
+  bool converged() const override {
+    return solver_->iterations() >= maxIterations_ || solver_->progress() <= tolerance_;
+  }
+  int iterations() const override { return solver_->iterations(); }
+  const std::vector<double>& history() const override { return history_; }
+  std::string measure() const override { return solver_->progressMeasure(); }
+  std::string solverName() const override { return solver_->name(); }
+  int lastShooter() const override {
+    // Shooters are elements only for hemisphere rows; analytic shooters are whole patches.
+    const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver_.get());
+    return shooting && !analytic_ ? shooting->lastShooter() : -1;
+  }
+  // The element's hemisphere row (with the analytic method, the rays the hemisphere method would
+  // cast: that method uses shadow rays to patches instead).
+  std::vector<RaySegment> rowRays(int element) const override {
+    const double escapeLength = 0.25 * result_.mesh->boundsDiagonal();
+    std::vector<RaySegment> out;
+    for (const RowRay& r : method_.traceRow(element)) {
+      const double length = std::isfinite(r.distance) ? r.distance : escapeLength;
+      out.push_back({r.origin, r.origin + length * r.direction, r.target >= 0});
+    }
+    return out;
+  }
+  double tolerance() const { return tolerance_; }
+
+ private:
+  const SolveResult& result_;
+  SolveOptions options_;
+  RayCaster rays_;
+  HemisphereFormFactors method_;
+  FormFactorCache cache_;
+  std::unique_ptr<AnalyticPatchShots> analytic_;
+  SparseRows gather_;
+  std::unique_ptr<GatheringColumns> columns_;
+  std::unique_ptr<Solver> solver_;
+  std::vector<double> history_;
+  int maxIterations_ = 0;
+  double tolerance_ = 0;
+};
+
+struct ViewArgs {
+  std::string input, screenshot, size = "1280x720", scalar = "colour";
+  bool cameraFromScene = false, smooth = false, edges = false, outlines = false, noChart = false;
+  bool noHelp = false;
+  int raysOf = -1;
+  int stopAfter = -1;
+};
+
+void parseSize(const std::string& text, ViewerOptions& view) {
+  std::smatch m;
+  if (!std::regex_match(text, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
+    throw InputError("--size '" + text + "': expected WIDTHxHEIGHT, e.g. 1280x720");
+  view.width = std::stoi(m[1]);
+  view.height = std::stoi(m[2]);
+  if (view.width < 64 || view.height < 64 || view.width > 8192 || view.height > 8192)
+    throw InputError("--size '" + text + "': width and height must lie in [64, 8192]");
+}
+
+void requireDisplay(bool screenshot) {
+  const char* display = std::getenv("DISPLAY");
+  if (display && *display) return;
+  // Debian's VTK renders through X only, off-screen included.
+  throw RuntimeFailure(screenshot
+                           ? "no X display for off-screen rendering (this VTK build needs one): "
+                             "run under `xvfb-run -a radiosity view ...`"
+                           : "no X display (DISPLAY is not set): run on a desktop, or use "
+                             "--screenshot FILE.png under `xvfb-run -a`");
+}
+
+void runView(const ViewArgs& args, SolveOptions options) {
+  ViewerOptions view;
+  parseSize(args.size, view);
+  view.scalar = parseDisplayScalar(args.scalar);
+  view.smooth = args.smooth;
+  view.edges = args.edges;
+  view.outlines = args.outlines;
+  view.chart = !args.noChart;
+  view.help = !args.noHelp && args.screenshot.empty();
+  view.pickElement = args.raysOf;
+  view.stopAfter = args.stopAfter;
+  view.title = "radiosity view " + args.input;
+  requireDisplay(!args.screenshot.empty());
+
+  auto show = [&](vtkSmartPointer<vtkPolyData> data, ToneMap toneMap, LiveSolution* live) {
+    SolutionViewer viewer(std::move(data), toneMap, live, view);
+    if (!args.screenshot.empty())
+      viewer.screenshot(args.screenshot);
+    else
+      viewer.interact();
+  };
+  auto cameraFor = [&](const std::string& scenePath) {
+    if (!args.cameraFromScene) return;
+    view.camera = readCameraSidecar(scenePath);
+    if (!view.camera) logInfo("no " + viewCameraFile(scenePath) + ": framing the bounding box");
+  };
+
+  if (std::filesystem::is_directory(args.input)) {
+    const std::string path = (std::filesystem::path(args.input) / "solution.vtp").string();
+    vtkSmartPointer<vtkPolyData> data = readSolutionVtp(path);
+    cameraFor(solutionSceneFile(data));
+    if (args.raysOf >= 0)
+      logWarning("--rays-of: a saved solution has no form factors; open the scene to see rays");
+    view.pickElement = -1;
+    if (args.stopAfter >= 0) logWarning("--stop-after: a saved solution has no solver to step");
+    const ToneMap toneMap = solutionToneMap(data);
+    show(data, toneMap, nullptr);
+    return;
+  }
+
+  options.scenePath = args.input;
+  SolveResult result = runSolve(options);
+  cameraFor(options.scenePath);
+  std::vector<Rgb> radiance(result.radiosity.size());
+  for (size_t e = 0; e < radiance.size(); ++e) radiance[e] = result.radiosity[e] / M_PI;
+  const ToneMap toneMap =
+      ToneMap::autoExposure(radiance, result.problem.area);  // as solve's outputs
+  std::vector<Rgb> unshot(result.radiosity.size());
+  for (int e = 0; e < result.mesh->elementCount(); ++e) {
+    const Eigen::Vector3d u = result.mesh->unshot(e);
+    unshot[e] = {u.x(), u.y(), u.z()};
+  }
+  vtkSmartPointer<vtkPolyData> data =
+      makeSolutionPolyData(*result.mesh, result.radiosity, unshot, toneMap);
+
+  ViewerSolve live(result, options);
+  view.tolerance = live.tolerance();
+  // Replay the solve to draw its convergence curve (rows are recomputed once, then cached):
+  // the result is the same solution, deterministic for the seed.
+  if (view.chart) {
+    while (!live.converged()) live.step();
+    logInfo("replayed " + std::to_string(live.iterations()) +
+            " iterations for the convergence chart");
+  }
+  show(data, toneMap, &live);
+}
+
+}  // namespace
+
+void registerViewCommand(CLI::App& app, CommandAction& run) {
+  auto options = std::make_shared<SolveOptions>();
+  auto solverName = std::make_shared<std::string>("progressive");
+  auto args = std::make_shared<ViewArgs>();
+  CLI::App* view =
+      app.add_subcommand("view", "Show a solution in a VTK window (or render it to a PNG)");
+  view->add_option("input", args->input,
+                   "OBJ scene (solved first) or a directory holding solution.vtp")
+      ->required();
+  view->add_option("--screenshot", args->screenshot,
+                   "Render off-screen to this PNG instead of opening a window");
+  view->add_option("--size", args->size, "Window or image size WIDTHxHEIGHT")
+      ->default_val(args->size);
+  view->add_flag("--camera-from-scene", args->cameraFromScene,
+                 "Use <scene>.camera.json next to the OBJ (position, look_at, up, vfov_degrees)");
+  view->add_option("--scalar", args->scalar,
+                   "colour | radiance | B_r | B_g | B_b | unshot | area | level | patch")
+      ->default_val(args->scalar);
+  view->add_flag("--smooth", args->smooth, "Interpolated vertex colours instead of flat elements");
+  view->add_flag("--edges", args->edges, "Show element edges");
+  view->add_flag("--outlines", args->outlines, "Show patch outlines");
+  view->add_flag("--no-chart", args->noChart, "No convergence panel (and no replay of the solve)");
+  view->add_flag("--no-help", args->noHelp, "Start without the key overlay");
+  view->add_option("--rays-of", args->raysOf, "Draw the form-factor rays of this element")
+      ->check(CLI::NonNegativeNumber);
+  view->add_option(
+          "--stop-after", args->stopAfter,
+          "Show the solver restarted from B = E after this many iterations (shots, sweeps)")
+      ->check(CLI::NonNegativeNumber);
+  addSolveOptions(*view, *options, *solverName);
+  addCommonFlags(*view);
+  view->callback([&run, options, solverName, args] {
+    run = [options, solverName, args] {
+      options->solver = parseSolverKind(*solverName);
+      runView(*args, *options);
+    };
+  });
+}
+
+}  // namespace rad

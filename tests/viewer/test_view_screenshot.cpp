@@ -1,0 +1,219 @@
+// `radiosity view --screenshot` under Xvfb: the Cornell box from its camera, walls on the right
+// sides, and the convergence panel.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+#include <vtkSmartPointer.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/support/run_command.h"
+
+namespace rad {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string cornellDir = std::string(RADIOSITY_DATA_DIR) + "/cornell_box";
+
+bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+// Runs `radiosity view ...` under xvfb-run; returns the exit code, stderr in `errors`.
+int runView(const std::string& arguments, std::string& errors) {
+  const fs::path err = testing::scratchPath("view_stderr.txt");
+  const std::string command = "xvfb-run -a " + std::string(RADIOSITY_BINARY) + " view " +
+                              arguments + " >/dev/null 2>" + err.string() + " </dev/null";
+  const int status = std::system(command.c_str());
+  std::ifstream in(err);
+  errors.assign(std::istreambuf_iterator<char>(in), {});
+  fs::remove(err);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<std::array<int, 3>> rgb;  // row 0 at the top
+  std::array<int, 3> at(double fx, double fy) const {
+    return rgb[static_cast<int>(fy * (height - 1)) * width + static_cast<int>(fx * (width - 1))];
+  }
+  // Mean colour of the box [fx0, fx1] × [fy0, fy1] (fractions of the image, y down).
+  std::array<double, 3> mean(double fx0, double fx1, double fy0, double fy1) const {
+    std::array<double, 3> sum{};
+    int n = 0;
+    for (int y = static_cast<int>(fy0 * height); y < static_cast<int>(fy1 * height); ++y)
+      for (int x = static_cast<int>(fx0 * width); x < static_cast<int>(fx1 * width); ++x, ++n)
+        for (int c = 0; c < 3; ++c) sum[c] += rgb[y * width + x][c];
+    for (double& s : sum) s /= std::max(n, 1);
+    return sum;
+  }
+};
+
+Image readPng(const fs::path& path) {
+  auto reader = vtkSmartPointer<vtkPNGReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  Image out;
+  int dims[3];
+  image->GetDimensions(dims);
+  out.width = dims[0], out.height = dims[1];
+  out.rgb.resize(static_cast<size_t>(out.width) * out.height);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (int c = 0; c < 3; ++c)  // VTK images start at the bottom row
+        out.rgb[(out.height - 1 - y) * out.width + x][c] =
+            static_cast<int>(image->GetScalarComponentAsDouble(x, y, 0, c));
+  return out;
+}
+
+// A copy of the Cornell box with the camera sidecar of REFERENCES.md (metres).
+fs::path cornellWithCamera(const std::string& name) {
+  const fs::path dir = testing::scratchPath(name);
+  fs::create_directories(dir);
+  fs::copy_file(cornellDir + "/cornell_box.obj", dir / "cornell_box.obj");
+  fs::copy_file(cornellDir + "/cornell_box.mtl", dir / "cornell_box.mtl");
+  std::ofstream(dir / "cornell_box.camera.json")
+      << R"({"position": [0.278, 0.273, -0.8], "look_at": [0.278, 0.273, 0.0], "up": [0, 1, 0],
+            "vfov_degrees": 39.3, "note": "extra keys are ignored"})";
+  return dir;
+}
+
+TEST(ViewScreenshot, CornellBoxFromItsCameraHasRedLeftGreenRight) {
+  if (!haveXvfb())
+    GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
+  const fs::path dir = cornellWithCamera("view_cornell");
+  const fs::path png = dir / "shot.png";
+  std::string errors;
+  ASSERT_EQ(runView((dir / "cornell_box.obj").string() + " --elements 300 --rays 64 --screenshot " +
+                        png.string() + " --size 320x240 --camera-from-scene --no-chart --quiet",
+                    errors),
+            0)
+      << errors;
+  const Image image = readPng(png);
+  ASSERT_EQ(image.width, 320);
+  ASSERT_EQ(image.height, 240);
+  // Only the PNG: the temporary name was renamed away.
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) files += entry.path().extension() == ".png";
+  EXPECT_EQ(files, 1);
+
+  // From (0.278, 0.273, -0.8) looking +z with +y up, +x is to the left: the red wall (x = 0.556)
+  // spans about 13-28% of the width at mid height, the green wall (x = 0) about 72-87%.
+  const auto red = image.mean(0.17, 0.25, 0.4, 0.6);
+  EXPECT_GT(red[0], 2 * red[1]) << "left wall is not red";
+  EXPECT_GT(red[0], 2 * red[2]) << "left wall is not red";
+  const auto green = image.mean(0.75, 0.83, 0.4, 0.6);
+  EXPECT_GT(green[1], 1.3 * green[0]) << "right wall is not green";
+  EXPECT_GT(green[1], 1.3 * green[2]) << "right wall is not green";
+
+  // Most of the frame is the box, not the background (the top-left corner sees past the box).
+  const auto background = image.at(0.0, 0.0);
+  int scene = 0;
+  for (const auto& p : image.rgb)
+    scene += std::abs(p[0] - background[0]) + std::abs(p[1] - background[1]) +
+                 std::abs(p[2] - background[2]) >
+             6;
+  EXPECT_GT(scene, static_cast<int>(image.rgb.size() / 2));
+  fs::remove_all(dir);
+}
+
+TEST(ViewScreenshot, ConvergencePanelAndSavedSolution) {
+  if (!haveXvfb())
+    GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
+  const fs::path dir = cornellWithCamera("view_panel");
+  std::string errors;
+  const fs::path withChart = dir / "chart.png";
+  ASSERT_EQ(runView((dir / "cornell_box.obj").string() +
+                        " --elements 200 --rays 32 --edges --outlines --rays-of 5"
+                        " --screenshot " +
+                        withChart.string() + " --size 400x200 --quiet",
+                    errors),
+            0)
+      << errors;
+  const Image image = readPng(withChart);
+  ASSERT_EQ(image.width, 400);
+  ASSERT_EQ(image.height, 200);
+  // The panel (right 36%) has a white background with the curve and axes drawn on it.
+  int white = 0, ink = 0, total = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = static_cast<int>(0.66 * image.width); x < image.width; ++x, ++total) {
+      const auto& p = image.rgb[y * image.width + x];
+      white += p[0] > 245 && p[1] > 245 && p[2] > 245;
+      ink += p[0] < 200 || p[1] < 200 || p[2] < 200;
+    }
+  EXPECT_GT(white, total / 2);
+  EXPECT_GT(ink, 50);
+
+  // A saved solution opens from its directory.
+  const fs::path out = dir / "out";
+  const auto solve =
+      testing::runRadiosity("solve " + (dir / "cornell_box.obj").string() +
+                            " --elements 200 --rays 32 --quiet --out " + out.string());
+  ASSERT_EQ(solve.exitCode, 0) << solve.stderrText;
+  const fs::path saved = dir / "saved.png";
+  ASSERT_EQ(runView(out.string() + " --camera-from-scene --screenshot " + saved.string() +
+                        " --size 200x150 --quiet",
+                    errors),
+            0)
+      << errors;
+  EXPECT_EQ(readPng(saved).width, 200);
+  fs::remove_all(dir);
+}
+
+TEST(ViewScreenshot, SteppedSolverBrightensTowardsTheSolution) {
+  if (!haveXvfb())
+    GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
+  const fs::path dir = cornellWithCamera("view_steps");
+  // Shooting only ever adds light: the back wall (centre of the image) is black at B = E, brighter
+  // after some shots and brightest once converged, under the same fixed exposure.
+  double previous = -100;
+  for (const std::string stop : {"--stop-after 0", "--stop-after 20", ""}) {
+    const fs::path png = dir / "steps.png";
+    std::string errors;
+    ASSERT_EQ(runView((dir / "cornell_box.obj").string() +
+                          " --elements 300 --rays 64 --camera-from-scene --no-chart " + stop +
+                          " --screenshot " + png.string() + " --size 200x150 --quiet",
+                      errors),
+              0)
+        << errors;
+    const auto wall = readPng(png).mean(0.42, 0.58, 0.35, 0.5);
+    const double brightness = wall[0] + wall[1] + wall[2];
+    if (stop == "--stop-after 0") {
+      EXPECT_LT(brightness, 3.0) << "walls must be black before the first shot";
+    }
+    EXPECT_GT(brightness, previous + 10) << stop;
+    previous = brightness;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(ViewScreenshot, BadInputNamesTheFileAndLeavesNoPng) {
+  if (!haveXvfb())
+    GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
+  const fs::path dir = testing::scratchPath("view_bad");
+  fs::create_directories(dir);
+  std::string errors;
+  const fs::path png = dir / "never.png";
+  EXPECT_EQ(runView(dir.string() + " --screenshot " + png.string(), errors), 1);
+  EXPECT_NE(errors.find((dir / "solution.vtp").string()), std::string::npos) << errors;
+  std::ofstream(dir / "cornell_box.camera.json") << "{\"position\": [0, 0, 1],\n \"look_at\": ";
+  fs::copy_file(cornellDir + "/cornell_box.obj", dir / "cornell_box.obj");
+  fs::copy_file(cornellDir + "/cornell_box.mtl", dir / "cornell_box.mtl");
+  EXPECT_EQ(runView((dir / "cornell_box.obj").string() +
+                        " --elements 100 --rays 16 --camera-from-scene --no-chart "
+                        "--screenshot " +
+                        png.string(),
+                    errors),
+            1);
+  EXPECT_NE(errors.find("cornell_box.camera.json"), std::string::npos) << errors;
+  EXPECT_NE(runView((dir / "cornell_box.obj").string() + " --size 12x --screenshot " + png.string(),
+                    errors),
+            0);
+  EXPECT_NE(errors.find("--size"), std::string::npos) << errors;
+  EXPECT_FALSE(fs::exists(png));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rad

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "radiosity/output/tone_map.h"
+#include "viewer/display_scalars.h"
+#include "viewer/live_solution.h"
+#include "viewer/scene_camera.h"
+
+class vtkActor;
+class vtkPolyData;
+class vtkPolyDataMapper;
+class vtkRenderer;
+class vtkRenderWindow;
+class vtkScalarBarActor;
+class vtkTextActor;
+
+namespace rad {
+
+class ConvergenceChart;
+
+struct ViewerOptions {
+  DisplayScalar scalar = DisplayScalar::Colour;
+  bool smooth = false;        // vertex colours interpolated, instead of flat elements
+  bool edges = false;         // element edges
+  bool outlines = false;      // patch outlines
+  bool chart = true;          // the convergence panel, when there is a history
+  bool cullBackFaces = true;  // surfaces are one-sided: see into closed rooms
+  bool help = true;           // the key overlay (interactive window)
+  int width = 1280, height = 720;
+  std::optional<CameraSpec> camera;  // default: frame the bounding box
+  int pickElement = -1;              // draw this element's form-factor rays from the start
+  double tolerance = 0;              // drawn on the convergence chart
+  int stopAfter = -1;                // >= 0: the live solver restarted and stepped this often
+  std::string title = "radiosity";
+};
+
+// The solution on screen: the mesh coloured by a scalar, edges, patch outlines, picked rays,
+// a scalar bar, the key overlay and the convergence chart. With a LiveSolution the keys step the
+// solver and the colours follow; without one (a saved solution) those keys say so.
+class SolutionViewer {
+ public:
+  SolutionViewer(vtkSmartPointer<vtkPolyData> solution, ToneMap toneMap, LiveSolution* live,
+                 ViewerOptions options);
+  ~SolutionViewer();
+  SolutionViewer(const SolutionViewer&) = delete;
+  SolutionViewer& operator=(const SolutionViewer&) = delete;
+
+  // Renders off-screen at the options' size and writes a PNG atomically.
+  void screenshot(const std::string& pngPath);
+  // Opens the window and returns when it is closed.
+  void interact();
+
+  // Key handling (viewer_style.cpp forwards keys, picks and timer ticks here).
+  bool handleKey(const std::string& key, int x, int y);  // false: not ours
+  void runTick();
+  bool running() const { return running_; }
+  void pickAt(int x, int y);
+  void showRows(int element);
+  static std::string keyHelp();
+
+ private:
+  void build();
+  void refreshColours();
+  void refreshSolution();  // after the live solver moved
+  void refreshStatus();
+  void refreshChart();
+  void setRays(const std::vector<RaySegment>& rays);
+  void printElement(int element) const;
+  void resetCamera();
+  void say(const std::string& message);
+
+  vtkSmartPointer<vtkPolyData> solution_;
+  ToneMap toneMap_;
+  LiveSolution* live_;
+  ViewerOptions options_;
+  bool ambient_ = false;
+  bool running_ = false;
+  int timer_ = -1;
+  std::string lastMessage_;
+
+  vtkSmartPointer<vtkRenderWindow> window_;
+  vtkSmartPointer<vtkRenderer> scene_;
+  vtkSmartPointer<vtkPolyDataMapper> meshMapper_;
+  vtkSmartPointer<vtkActor> mesh_, outlines_, rays_;
+  vtkSmartPointer<vtkScalarBarActor> scalarBar_;
+  vtkSmartPointer<vtkTextActor> help_, status_;
+  ConvergenceChart* chart_ = nullptr;
+};
+
+}  // namespace rad
