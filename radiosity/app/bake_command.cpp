@@ -20,6 +20,9 @@
 #include "radiosity/output/lightmap_baked_mesh.h"
 #include "radiosity/output/obj_export.h"
 #include "radiosity/output/vertex_colors_ply.h"
+#include "radiosity/render/final_gather.h"
+#include "radiosity/render/render_scene.h"
+#include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
 namespace {
@@ -33,6 +36,7 @@ struct BakeOptions {
   int dilation = -1;  // -1: the padding
   double chartAngle = 30;
   bool noLightmap = false;
+  int gather = 0;  // per-texel final gather rays; 0: interpolate the solution
 };
 
 double since(std::chrono::steady_clock::time_point t) {
@@ -78,7 +82,24 @@ void runBake(BakeOptions& o) {
     }
     const double chartSeconds = since(t);
     t = std::chrono::steady_clock::now();
-    lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation);
+    if (o.gather > 0) {
+      // Per-texel final gather: direct light by shadow rays to the emitters and gathered light
+      // from the solution at every texel, for shadows sharper than the elements.
+      const RayCaster caster(mesh);
+      const RenderScene view(result.scene, mesh, caster);
+      const FinalGather gather(view, result.radiosity, {o.gather, 16});
+      const uint64_t seed = o.solve.seed;
+      lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation,
+                              [&](int e, const Eigen::Vector3d& b, size_t texel) {
+                                const auto c = mesh.corners(e);
+                                Rng rng(streamKey(seed, 0x6c6d6170ull, texel));  // per texel
+                                RayCounts counts;
+                                return gather.outgoingRadiance(e, b[0] * c[0] + b[1] * c[1] + b[2] * c[2],
+                                                               rng, counts);
+                              });
+    } else {
+      lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation);
+    }
     png = encodePng(lightmap.radiance, toneMap);
     logInfo("lightmap: " + std::to_string(charts.charts.size()) + " charts, " +
             std::to_string(layout.width) + "×" + std::to_string(layout.height) + " texels of " +
@@ -94,6 +115,7 @@ void runBake(BakeOptions& o) {
                            {"texels_dilated", lightmap.count(TexelState::Dilated)},
                            {"texels_empty", lightmap.count(TexelState::Empty)},
                            {"chart_seconds", chartSeconds},
+                           {"gather_rays", o.gather},
                            {"bake_seconds", since(t)},
                            {"unit", "outgoing radiance, W m^-2 sr^-1"}};
   } else {
@@ -157,6 +179,11 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
   bake->add_option("--dilation", o->dilation,
                    "Rings of texels filled around each chart (default: --padding)")
       ->check(CLI::Range(0, 64));
+  bake->add_option("--gather", o->gather,
+                   "Per-texel final gather with N rays (and N shadow rays) for sharp shadows; 0: "
+                   "interpolate the solution")
+      ->default_val(0)
+      ->check(CLI::NonNegativeNumber);
   bake->add_option("--chart-angle", o->chartAngle, "Largest normal angle within one chart, degrees")
       ->default_val(o->chartAngle)
       ->check(CLI::Range(0.0, 89.0));

@@ -1,3 +1,5 @@
+#include <tbb/parallel_for.h>
+
 #include "radiosity/output/lightmap_bake.h"
 
 #include <algorithm>
@@ -61,7 +63,8 @@ size_t Lightmap::count(TexelState s) const {
 
 Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
                       const VertexInterpolation& interpolation,
-                      const std::vector<Rgb>& vertexRadiance, int dilationRadius) {
+                      const std::vector<Rgb>& vertexRadiance, int dilationRadius,
+                      const TexelEvaluator& evaluate) {
   if (dilationRadius < 0 || dilationRadius > layout.padding)
     throw std::invalid_argument("dilation radius " + std::to_string(dilationRadius) +
                                 " exceeds the padding of " + std::to_string(layout.padding) +
@@ -75,6 +78,7 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
   map.element.assign(map.chart.size(), -1);
   map.state.assign(map.chart.size(), TexelState::Empty);
   map.dilationRadius = dilationRadius;
+  std::vector<Eigen::Vector3d> texelBarycentric(evaluate ? map.chart.size() : 0);
 
   auto value = [&](int e, const Eigen::Vector3d& b) {
     const auto& v = interpolation.triangle(e);
@@ -101,7 +105,9 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
         if (map.state[i] != TexelState::Empty) continue;
         const Eigen::Vector3d b = barycentric(t, Vec2(x + 0.5, y + 0.5));
         if (b.minCoeff() < -1e-12 || !b.allFinite()) continue;
-        map.radiance.pixels[i] = value(e, b.cwiseMax(0.0) / b.cwiseMax(0.0).sum());
+        const Eigen::Vector3d inside = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
+        map.radiance.pixels[i] = value(e, inside);
+        if (evaluate) texelBarycentric[i] = inside;
         map.chart[i] = layout.chartOfElement[e], map.element[i] = e,
         map.state[i] = TexelState::Covered;
       }
@@ -118,12 +124,23 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
         const std::array<Vec2, 3> lower{Vec2(x, y), Vec2(x + 1, y), Vec2(x + 1, y + 1)};
         const std::array<Vec2, 3> upper{Vec2(x, y), Vec2(x + 1, y + 1), Vec2(x, y + 1)};
         if (!trianglesOverlap2d(t, lower, 1e-9) && !trianglesOverlap2d(t, upper, 1e-9)) continue;
-        map.radiance.pixels[i] = value(e, nearestBarycentric(t, Vec2(x + 0.5, y + 0.5)));
+        const Eigen::Vector3d nearest = nearestBarycentric(t, Vec2(x + 0.5, y + 0.5));
+        map.radiance.pixels[i] = value(e, nearest);
+        if (evaluate) texelBarycentric[i] = nearest;
         map.chart[i] = layout.chartOfElement[e], map.element[i] = e,
         map.state[i] = TexelState::Conservative;
       }
   }
   progress.finish();
+  if (evaluate) {
+    Progress gathering("lightmap gather", map.chart.size(), "texels");
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, map.chart.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i != r.end(); ++i)
+        if (map.element[i] >= 0) map.radiance.pixels[i] = evaluate(map.element[i], texelBarycentric[i], i);
+      gathering.advance(r.size());
+    });
+    gathering.finish();
+  }
 
   // Dilation, one ring at a time from a snapshot, so a ring reads only earlier rings.
   for (int ring = 0; ring < dilationRadius; ++ring) {

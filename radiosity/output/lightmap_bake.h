@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "meshing/lightmap_packing.h"
@@ -38,8 +39,15 @@ struct Lightmap {
 // inside an element read only its chart. Then `dilationRadius` rings of empty texels around each
 // chart (at most the layout's padding) take the mean of their filled neighbours of one chart —
 // never of two. Throws std::invalid_argument when dilationRadius exceeds the padding.
+//
+// With `evaluate`, every texel an element covers (fully or in part) takes evaluate(element,
+// barycentric, texel) instead of the interpolated value — e.g. a per-texel final gather — computed
+// in parallel before the dilation.
+using TexelEvaluator =
+    std::function<Rgb(int element, const Eigen::Vector3d& barycentric, size_t texel)>;
 Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
                       const VertexInterpolation& interpolation,
-                      const std::vector<Rgb>& vertexRadiance, int dilationRadius);
+                      const std::vector<Rgb>& vertexRadiance, int dilationRadius,
+                      const TexelEvaluator& evaluate = {});
 
 }  // namespace rad

@@ -117,6 +117,20 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
   }
 }
 
+Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& position, Rng& rng,
+                                  RayCounts& counts) const {
+  SurfaceHit hit;
+  hit.element = element;
+  hit.position = position;
+  hit.normal = scene_.mesh().normal(element);
+  hit.front = true;
+  hit.material = &scene_.material(element);
+  const Material& m = *hit.material;
+  if (m.isSpecular()) return {};
+  if (m.diffuse.maxComponent() == 0) return m.emission;
+  return m.emission + m.diffuse * (directLight(hit, rng, counts) + gatherLight(hit, rng, counts));
+}
+
 Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d& startDirection,
                           Rng& rng, RayCounts& counts) const {
   Eigen::Vector3d origin = startOrigin, direction = startDirection;

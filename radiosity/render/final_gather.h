@@ -29,6 +29,11 @@ class FinalGather : public Integrator {
                RayCounts& counts) const override;
   std::string name() const override;
 
+  // Outgoing radiance at a point of a diffuse element, seen from its front (for baking
+  // lightmaps by per-texel final gather): Ke + rho·(direct + gathered light). Mirrors and glass
+  // hold no radiance of their own here: 0.
+  Rgb outgoingRadiance(int element, const Eigen::Vector3d& position, Rng& rng, RayCounts& counts) const;
+
  private:
   Rgb interpolatedRadiance(const SurfaceHit& hit) const;  // B/π at the hit, from vertex values
   Rgb directLight(const SurfaceHit& hit, Rng& rng, RayCounts& counts) const;  // ∫ L_e cos dω / π
