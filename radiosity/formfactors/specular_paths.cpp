@@ -4,15 +4,6 @@
 
 namespace rad {
 
-double fresnelDielectric(double cosI, double etaI, double etaT) {
-  const double sinT = etaI / etaT * std::sqrt(std::max(0.0, 1.0 - cosI * cosI));
-  if (sinT >= 1.0) return 1.0;
-  const double cosT = std::sqrt(std::max(0.0, 1.0 - sinT * sinT));
-  const double parallel = (etaT * cosI - etaI * cosT) / (etaT * cosI + etaI * cosT);
-  const double perpendicular = (etaI * cosI - etaT * cosT) / (etaI * cosI + etaT * cosT);
-  return 0.5 * (parallel * parallel + perpendicular * perpendicular);
-}
-
 SpecularPathEnd traceThroughSpecular(const RayCaster& rays, const std::vector<Eigen::Vector3d>& normals,
                                      const std::vector<SpecularSurface>& surfaces,
                                      Eigen::Vector3d origin, Eigen::Vector3d direction, int from,

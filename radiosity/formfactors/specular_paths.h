@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "radiosity/core/fresnel.h"
 #include "radiosity/core/rgb.h"
 #include "radiosity/core/rng.h"
 #include "radiosity/visibility/ray_caster.h"
@@ -36,8 +37,5 @@ SpecularPathEnd traceThroughSpecular(const RayCaster& rays, const std::vector<Ei
                                      Eigen::Vector3d origin, Eigen::Vector3d direction, int from,
                                      Rng& rng, int maxDepth, int* raysCast);
 
-// Unpolarised Fresnel reflectance for a ray going from index etaI to etaT with incidence cosine
-// cosI (>= 0); 1 under total internal reflection.
-double fresnelDielectric(double cosI, double etaI, double etaT);
 
 }  // namespace rad

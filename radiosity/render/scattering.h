@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "radiosity/core/fresnel.h"
 #include "radiosity/core/rgb.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/material.h"
@@ -24,17 +25,6 @@ inline Eigen::Vector3d cosineDirection(const Eigen::Vector3d& n, double u1, doub
 
 inline Eigen::Vector3d reflect(const Eigen::Vector3d& d, const Eigen::Vector3d& n) {
   return d - 2 * d.dot(n) * n;
-}
-
-// Unpolarised Fresnel reflectance of a dielectric interface, light going from index etaI to
-// etaT with cosThetaI ≥ 0 on the incident side; 1 under total internal reflection.
-inline double fresnelDielectric(double cosThetaI, double etaI, double etaT) {
-  const double sinT = etaI / etaT * std::sqrt(std::max(0.0, 1 - cosThetaI * cosThetaI));
-  if (sinT >= 1) return 1;
-  const double cosT = std::sqrt(std::max(0.0, 1 - sinT * sinT));
-  const double rs = (etaI * cosThetaI - etaT * cosT) / (etaI * cosThetaI + etaT * cosT);
-  const double rp = (etaT * cosThetaI - etaI * cosT) / (etaT * cosThetaI + etaI * cosT);
-  return 0.5 * (rs * rs + rp * rp);
 }
 
 // One step along a specular chain: the ray leaving a mirror or glass hit and the factor the
