@@ -8,6 +8,8 @@
 
 namespace rad {
 namespace {
+// Relative tolerance (on squared lengths) below which two edges count as equally long.
+constexpr double kTie = 1e-7;
 Eigen::Vector3d toEigen(const OpenMesh::Vec3d& p) { return {p[0], p[1], p[2]}; }
 OpenMesh::Vec3d toOm(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 }  // namespace
@@ -54,8 +56,9 @@ void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
   if (!f.is_valid()) {
     // Non-manifold or inconsistently wound contact with a neighbour: give this triangle its own
     // vertices. It stays conforming within itself; the seam is a real crease in the input.
-    f = mesh_.add_face(mesh_.add_vertex(mesh_.point(a)), mesh_.add_vertex(mesh_.point(b)),
-                       mesh_.add_vertex(mesh_.point(c)));
+    // Copies: point() refers into OpenMesh's point array, which add_vertex() may reallocate.
+    const TriMesh::Point pa = mesh_.point(a), pb = mesh_.point(b), pc = mesh_.point(c);
+    f = mesh_.add_face(mesh_.add_vertex(pa), mesh_.add_vertex(pb), mesh_.add_vertex(pc));
     if (!f.is_valid()) throw std::runtime_error("PatchMesh: OpenMesh rejected a triangle");
   }
   mesh_.property(patchId_, f) = patch;
@@ -128,16 +131,15 @@ double PatchMesh::patchArea(int patch) const {
 }
 
 TriMesh::EdgeHandle PatchMesh::longestEdge(TriMesh::FaceHandle f) const {
+  // Lengths within kTie of the longest count as equal and the lowest edge index wins: rounding
+  // must not decide between the equal legs of a bisected square, or the mesh would depend on the
+  // scene's scale and position.
+  double longest = 0;
+  for (auto eh : mesh_.fe_range(f)) longest = std::max(longest, mesh_.calc_edge_sqr_length(eh));
   TriMesh::EdgeHandle best;
-  double bestLength = -1;
-  for (auto eh : mesh_.fe_range(f)) {
-    const double length = mesh_.calc_edge_sqr_length(eh);
-    // Ties broken by index so that the choice is deterministic.
-    if (length > bestLength || (length == bestLength && eh.idx() < best.idx())) {
+  for (auto eh : mesh_.fe_range(f))
+    if (mesh_.calc_edge_sqr_length(eh) >= longest * (1 - kTie) && (!best.is_valid() || eh.idx() < best.idx()))
       best = eh;
-      bestLength = length;
-    }
-  }
   return best;
 }
 
@@ -165,7 +167,7 @@ void PatchMesh::refineAcross(TriMesh::FaceHandle f, int depth) {
     if (other == f) other = mesh_.opposite_face_handle(h);
     if (other.is_valid() && depth < 256) {
       const double otherLongest = mesh_.calc_edge_sqr_length(longestEdge(other));
-      if (otherLongest > length * (1 + 1e-12)) {
+      if (otherLongest > length * (1 + kTie)) {
         refineAcross(other, depth + 1);
         continue;  // the face across e changed; look again
       }

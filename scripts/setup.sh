@@ -18,6 +18,8 @@ packages=(
   libtinygltf-dev      # glTF 2.0 export (radiosity bake)
   libvtk9-dev xvfb xauth # viewer (radiosity view, solution.vtp); Xvfb for off-screen screenshots
 )
+# `scripts/setup.sh --fuzz`: clang and its libFuzzer runtime too (scripts/fuzz.sh; issue 9).
+if [[ " $* " == *" --fuzz "* ]]; then packages+=(clang libclang-rt-14-dev); fi
 
 # The Khronos glTF validator for the bake tests (npm, pinned by tools/gltf-validator/package-lock.json),
 # only where node and npm exist; the test that needs it skips with a message otherwise.

@@ -1,9 +1,11 @@
 // The `radiosity` command line. The only place that catches exceptions and chooses exit codes:
-// 0 success, 1 bad input or a failed run, 2 bad usage (unknown option, missing argument).
+// 0 success, 1 bad input or a failed run, 2 bad usage (unknown option, missing argument),
+// 130 / 143 interrupted by SIGINT / SIGTERM.
 #include <cstdio>
 
 #include "radiosity/app/commands.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/core/interrupt.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"radiosity: a global-illumination solver and lightmap baker"};
@@ -24,9 +26,14 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  // Ctrl-C / SIGTERM: stop within a second, leave no partial output, exit 128 + signal.
+  rad::installInterruptHandlers();
   try {
     if (run) run();
     return 0;
+  } catch (const rad::Interrupted& e) {
+    std::fprintf(stderr, "radiosity: %s\n", e.what());
+    return e.exitCode();
   } catch (const std::exception& e) {
     // InputError messages already read "file:line: what".
     std::fprintf(stderr, "error: %s\n", e.what());

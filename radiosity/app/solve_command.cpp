@@ -3,6 +3,7 @@
 
 #include "radiosity/app/commands.h"
 #include "radiosity/app/solve_job.h"
+#include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 
 namespace rad {
@@ -57,6 +58,10 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
                      "refinement: element budget (default: 8 × the uniform mesh)");
   command.add_option("--refine-passes", options.refinePasses, "refinement: solve-and-refine rounds")
       ->default_val(options.refinePasses);
+  command.add_option("--time-limit", options.timeLimit,
+                     "Stop iterating after this many seconds and keep the solution so far, flagged "
+                     "as not converged in summary.json (0: no limit)")
+      ->check(CLI::NonNegativeNumber);
   command.add_option("--receiver-points", options.receiverPoints,
                      "analytic: sample points per element, 1 or 3")
       ->default_val(options.receiverPoints);
@@ -74,7 +79,13 @@ void registerSolveCommand(CLI::App& app, CommandAction& run) {
     run = [options, solverName] {
       options->solver = parseSolverKind(*solverName);
       SolveResult result = runSolve(*options);
-      writeSolveOutputs(*options, result);
+      throwIfInterrupted();
+      {
+        // The files are written and renamed as a set; a signal now waits for it to finish.
+        OutputSection writing;
+        writeSolveOutputs(*options, result);
+      }
+      clearInterrupt();  // a signal that came while writing came too late: the run completed
     };
   });
 }

@@ -5,9 +5,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include "radiosity/core/errors.h"
+#include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/progress.h"
 #include "meshing/adaptive_refinement.h"
@@ -120,6 +122,47 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
   return problem;
 }
 
+uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays) {
+  constexpr uint64_t kBytesPerEntry = 12;  // 4-byte column index + 8-byte value
+  const uint64_t n = static_cast<uint64_t>(std::max(elements, 0));
+  if (method == FormFactorMethod::Analytic) return n * static_cast<uint64_t>(std::max(shooters, 0)) * kBytesPerEntry;
+  return n * std::min<uint64_t>(static_cast<uint64_t>(std::max(rays, 0)), n) * kBytesPerEntry;
+}
+
+uint64_t availableMemoryBytes() {
+  std::ifstream in("/proc/meminfo");
+  std::string key, unit;
+  uint64_t value = 0;
+  while (in >> key >> value >> unit)
+    if (key == "MemAvailable:") return value * 1024;  // reported in kB
+  return 0;
+}
+
+void checkFormFactorMemory(uint64_t needed, uint64_t available, FormFactorMethod method) {
+  if (available == 0 || needed <= available) return;
+  const auto gib = [](uint64_t bytes) { return formatNumber(bytes / double(1ull << 30)) + " GiB"; };
+  throw InputError("the form-factor rows may need up to " + gib(needed) + " but only " + gib(available) +
+                   " of memory is available: " +
+                   (method == FormFactorMethod::Analytic
+                        ? "raise --patch-area (fewer shooting patches) or --max-area (fewer elements), "
+                          "or lower --elements"
+                        : "lower --elements or raise --max-area (fewer elements), or lower --rays"));
+}
+
+void checkSceneLimits(const Scene& scene) {
+  if (scene.polygons.size() > kMaxElements)
+    throw InputError(scene.sourcePath, 0,
+                     std::to_string(scene.polygons.size()) + " polygons, more than the element limit " +
+                         formatNumber(kMaxElements) + ": every polygon needs at least one element");
+  // Beyond this, double precision leaves less than a millimetre-per-kilometre of resolution and
+  // Embree's single-precision BVH cannot separate nearby surfaces.
+  for (std::size_t i = 0; i < scene.positions.size(); ++i)
+    if (!(scene.positions[i].cwiseAbs().maxCoeff() <= kMaxCoordinate))
+      throw InputError(scene.sourcePath, 0,
+                       "vertex " + std::to_string(i + 1) + " has a coordinate beyond " +
+                           formatNumber(kMaxCoordinate) + " scene units: rescale the scene");
+}
+
 SolveResult runSolve(const SolveOptions& options) {
   const auto start = Clock::now();
   Scene scene = loadObjScene(options.scenePath);
@@ -152,6 +195,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
       (options.formFactors != FormFactorMethod::Analytic || options.solver != SolverKind::Progressive))
     throw InputError("adaptive refinement (--refine-threshold) needs --form-factors analytic and "
                      "--solver progressive: patches keep shooting while the elements are refined");
+  if (!(options.timeLimit >= 0) || !std::isfinite(options.timeLimit))
+    throw InputError("--time-limit must be a non-negative number of seconds");
   if (options.bounces >= 0 && options.solver != SolverKind::Jacobi)
     throw InputError("--bounces applies to --solver jacobi only");
 
@@ -162,6 +207,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
                                   static_cast<size_t>(result.threads));
 
   result.scene = std::move(scene);
+  checkSceneLimits(result.scene);  // first: a face lost to overflow would read as "no emitter"
   requireEmitter(result.scene);
   const bool specular = result.scene.hasSpecular();
   if (!specular)
@@ -173,11 +219,24 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   auto t = Clock::now();
   result.mesh = std::make_unique<PatchMesh>(buildPatchMesh(result.scene));
   const double totalArea = result.mesh->totalArea();
+  if (!(totalArea > 0) || !std::isfinite(totalArea))
+    throw InputError(result.scene.sourcePath, 0,
+                     "the polygons triangulate to no area (self-intersecting or degenerate faces?)");
   result.maxArea = options.maxArea > 0 ? options.maxArea : totalArea / options.targetElements;
   // Decided before any work: bisection gives at most about 2·totalArea/maxArea elements.
   if (totalArea / result.maxArea > kMaxElements)
     throw InputError("about " + formatNumber(totalArea / result.maxArea) + " elements requested (limit " +
-                     std::to_string(kMaxElements) + "): raise --max-area or lower --elements");
+                     formatNumber(kMaxElements) + "): raise --max-area or lower --elements");
+  {
+    // Also decided before any work: the worst case of the form-factor rows must fit in memory.
+    const double elements = std::ceil(totalArea / result.maxArea);
+    const double patches = options.formFactors == FormFactorMethod::Analytic
+                               ? std::ceil(totalArea / (options.patchArea > 0 ? options.patchArea : 8 * result.maxArea))
+                               : elements;
+    checkFormFactorMemory(formFactorMemoryEstimate(options.formFactors, static_cast<int>(elements),
+                                                   static_cast<int>(std::min(patches, elements)), options.raysPerElement),
+                          availableMemoryBytes(), options.formFactors);
+  }
   if (options.formFactors == FormFactorMethod::Analytic) {
     // Shooting patches first (coarser), then elements inside them.
     const double patchArea = options.patchArea > 0 ? options.patchArea : 8 * result.maxArea;
@@ -192,6 +251,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
           std::to_string(mesh.elementCount()) + " elements (max area " +
           formatNumber(result.maxArea) + ")");
 
+  throwIfInterrupted();
   t = Clock::now();
   RayCaster rays(mesh);
   result.times.bvh = since(t);
@@ -227,6 +287,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   ShotRows& shots = analytic ? static_cast<ShotRows&>(*analytic) : cache;
   result.formFactorMethod = analytic ? "analytic" : "hemisphere";
   result.shooters = shots.shooterCount();
+  throwIfInterrupted();
 
   t = Clock::now();
   std::unique_ptr<Solver> solver;
@@ -269,10 +330,17 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
                                options.minArea > 0 ? options.minArea : result.maxArea / 16,
                                options.maxElements > 0 ? options.maxElements : 8 * mesh.elementCount()};
   result.elementsBeforeRefinement = mesh.elementCount();
+  int unrefined = -1;  // elements the last refinement pass left alone
   for (int pass = 0;; ++pass) {
     Progress progress("solve (" + solver->name() + ")", 0, "iterations");
     const double startMeasure = std::max(solver->progress(), 1e-300);
+    bool outOfTime = false;
     while (solver->iterations() < maxIterations && solver->progress() > tolerance) {
+      throwIfInterrupted();
+      if (options.timeLimit > 0 && since(start) >= options.timeLimit) {
+        outOfTime = true;  // keep the solution reached so far, flagged as not converged
+        break;
+      }
       solver->step();
       progress.advance();
       if (tolerance > 0 && solver->progress() > 0) {
@@ -282,8 +350,11 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
                                                           formatNumber(solver->progress()));
       }
     }
-    result.converged = options.bounces >= 0 ? solver->iterations() == options.bounces
-                                            : solver->progress() <= tolerance;
+    result.converged = !outOfTime && (options.bounces >= 0 ? solver->iterations() == options.bounces
+                                                           : solver->progress() <= tolerance);
+    result.stoppedBy = outOfTime ? "time limit"
+                       : result.converged ? (options.bounces >= 0 ? "bounces" : "tolerance")
+                                          : "iteration limit";
     progress.finish(solver->progressMeasure() + " " + formatNumber(solver->progress()) +
                     (result.converged ? "" : " (not converged)"));
     if (!refine || pass == options.refinePasses || !result.converged) break;
@@ -293,6 +364,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     for (int e = 0; e < mesh.elementCount(); ++e) luminance[e] = solver->solution()[e].luminance();
     const std::vector<int> selected =
         selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
+    unrefined = mesh.elementCount() - static_cast<int>(selected.size());
     if (selected.empty()) break;
     const int before = mesh.elementCount();
     const std::vector<int> changed = refineElements(*result.mesh, selected, refinement);
@@ -309,6 +381,10 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
       break;
     }
   }
+  if (unrefined > 0)
+    note(result, "splitting " + std::to_string(unrefined) + " elements in the last refinement pass",
+         "their radiance is within the threshold of every neighbour and no emitter shadow "
+         "crosses them");
   const double solveAndRows = since(t);
   result.times.formFactors = analytic ? analytic->seconds() : cache.seconds();
   result.times.solve = std::max(0.0, solveAndRows - result.times.formFactors);
@@ -328,12 +404,27 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   result.rowsComputed = analytic ? analytic->rowsComputed() : cache.rowsComputed();
   result.raysCast = analytic ? analytic->raysCast() : cache.raysCast() + method.specularRays();
   result.specularRays = analytic ? 0 : method.specularRays();
-  if (result.rowsComputed < result.shooters)
+  if (result.rowsComputed < result.shooters) {
+    // Hemisphere rows have a known ray count each: report what skipping them saved.
+    uint64_t raysSaved = 0;
+    if (!analytic)
+      for (int e = 0; e < mesh.elementCount(); ++e)
+        if (!cache.hasRow(e)) raysSaved += method.raysForRow(e);
     note(result, "form-factor rows of " + std::to_string(result.shooters - result.rowsComputed) +
-                     (analytic ? " patches" : " elements"),
+                     (analytic ? " patches" : " elements") +
+                     (analytic ? std::string() : " (" + std::to_string(raysSaved) + " rays saved)"),
          options.solver == SolverKind::Progressive ? "they never held unshot power worth shooting"
                                                    : "black elements pass no light on");
-  if (!result.converged && options.bounces < 0)
+  }
+  if (analytic)
+    note(result,
+         "shadow rays between element–patch pairs facing away from each other or coplanar",
+         "they cannot exchange light; the pairs are not counted");
+  if (result.stoppedBy == "time limit")
+    logWarning("time limit of " + formatNumber(options.timeLimit) + " s reached after " +
+               std::to_string(result.iterations) + " iterations: writing the solution so far (" +
+               solver->progressMeasure() + " " + formatNumber(result.finalProgress) + ", not converged)");
+  else if (!result.converged && options.bounces < 0)
     logWarning("stopped after " + std::to_string(result.iterations) + " iterations with " +
                solver->progressMeasure() + " " + formatNumber(result.finalProgress) +
                " above the tolerance " + formatNumber(tolerance));

@@ -40,6 +40,8 @@ struct SolveOptions {
   double minArea = 0;          // refinement: smallest element area; 0: max area / 16
   int maxElements = 0;         // refinement: element budget; 0: 8 × the uniform mesh's count
   int refinePasses = 4;        // refinement: solve–refine rounds
+  double timeLimit = 0;        // seconds from the start of the solve; 0: none. Past it the
+                               // iterations stop and the solution so far is kept (not converged)
 };
 
 // Something the run decided not to do, and why (reported in the log and summary.json).
@@ -63,6 +65,7 @@ struct SolveResult {
   int elementsBeforeRefinement = 0;
   double finalProgress = 0;    // residual or unshot fraction reached
   bool converged = false;
+  std::string stoppedBy;       // "tolerance", "bounces", "iteration limit" or "time limit"
   double maxArea = 0;
   std::string formFactorMethod;
   int shooters = 0;            // elements (hemisphere) or shooting patches (analytic)
@@ -91,6 +94,21 @@ std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMes
 // The per-element problem of a meshed scene: E = pi·Ke on emitters, rho = Kd (0 on mirrors
 // and glass, which hold no radiosity).
 RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh);
+
+// Resource limits, decided before the work starts (issue 9).
+// Upper bound on the memory of the form-factor rows a run may store: hemisphere rows hold at
+// most min(rays, elements) entries each; analytic rows (gathering matrix or patch shots) at
+// most elements × shooters entries; about 12 bytes per entry (index and value).
+uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays);
+// MemAvailable from /proc/meminfo in bytes; 0 when unknown (the check is then skipped).
+uint64_t availableMemoryBytes();
+// Throws InputError naming the options to change when `needed` exceeds `available` (0: unknown).
+void checkFormFactorMemory(uint64_t needed, uint64_t available, FormFactorMethod method);
+// Throws InputError (naming the file) for scenes too large or too far out to solve: more
+// polygons than the element limit, coordinates beyond kMaxCoordinate. (Faces of more than 255
+// vertices are refused by the OBJ line check.)
+void checkSceneLimits(const Scene& scene);
+inline constexpr double kMaxCoordinate = 1e15;
 
 // Writes elements.csv, vertex_colors.ply and summary.json into options.outputDir. Every file is
 // written under a temporary name and renamed only once all of them are complete.

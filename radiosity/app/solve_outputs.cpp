@@ -62,6 +62,7 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& r, do
         {"tolerance", options.bounces >= 0 ? 0.0 : options.tolerance},
         {"bounces", options.bounces >= 0 ? nlohmann::json(options.bounces) : nlohmann::json()},
         {"converged", r.converged},
+        {"stopped_by", r.stoppedBy},
         {"emitted_power", r.problem.emittedPower()}}},
       {"threads", r.threads},
       {"time_seconds",

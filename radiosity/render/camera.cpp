@@ -82,6 +82,8 @@ Camera loadCamera(const std::string& path) {
     j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(path, lineOfByte(text, e.byte), "malformed JSON: " + std::string(e.what()));
+  } catch (const nlohmann::json::exception& e) {  // e.g. a number that overflows a double
+    throw InputError(path, 0, "unreadable JSON: " + std::string(e.what()));
   }
   if (!j.is_object()) throw InputError(path, 1, "a camera file holds one JSON object");
   static const char* known[] = {"position",     "look_at",        "up",

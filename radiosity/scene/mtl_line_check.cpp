@@ -34,6 +34,11 @@ MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
                            "material name '" + tokens[1] + " " + tokens[2] +
                                "...' contains spaces, which are not supported");
         }
+        // tinyobjloader ends a name at a NUL byte; control characters are never a real name.
+        for (unsigned char ch : tokens[1])
+          if (ch < 0x20 || ch == 0x7f)
+            throw InputError(file, line, "material name contains a control character (byte " +
+                                             std::to_string(ch) + ")");
         result.materials.push_back({tokens[1], file, line});
       } else if (result.materials.empty()) {
         // tinyobjloader would silently give these values to an unnamed material.

@@ -1,0 +1,92 @@
+// Ctrl-C / SIGTERM during a long solve: the process ends within a second, exits with 128 +
+// signal, and leaves no output directory or file behind.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "tests/robustness/child_process.h"
+#include "tests/support/run_command.h"
+
+namespace rad {
+namespace {
+
+const std::string kCornell = std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box.obj";
+
+std::string readText(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+struct InterruptCase {
+  const char* name;
+  int signal;
+  double after;                   // seconds before the signal
+  std::vector<std::string> args;  // solve options making the run last several seconds
+};
+
+void PrintTo(const InterruptCase& c, std::ostream* os) { *os << c.name; }
+
+class Interrupt : public ::testing::TestWithParam<InterruptCase> {};
+
+TEST_P(Interrupt, StopsWithinASecondAndLeavesNothing) {
+  const InterruptCase& c = GetParam();
+  const auto out = testing::scratchPath(std::string("interrupt_") + c.name);
+  const auto err = testing::scratchPath(std::string("stderr_of_interrupt_") + c.name);
+  std::vector<std::string> argv{RADIOSITY_BINARY, "solve", kCornell, "--out", out.string()};
+  argv.insert(argv.end(), c.args.begin(), c.args.end());
+  testing::ChildProcess child(argv, err.string());
+  ASSERT_TRUE(child.started());
+  std::this_thread::sleep_for(std::chrono::duration<double>(c.after));
+  ASSERT_TRUE(child.running()) << "the run ended before the signal; make it longer\n"
+                               << readText(err);
+
+  const auto sent = std::chrono::steady_clock::now();
+  child.signal(c.signal);
+  const bool ended = child.waitFor(5.0);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  ASSERT_TRUE(ended) << "still running 5 s after the signal";
+  EXPECT_LT(seconds, 1.0) << "took " << seconds << " s to stop";
+  ASSERT_TRUE(WIFEXITED(child.status())) << "killed by signal " << WTERMSIG(child.status());
+  EXPECT_EQ(WEXITSTATUS(child.status()), 128 + c.signal);
+  const std::string text = readText(err);
+  EXPECT_NE(text.find(c.signal == SIGINT ? "interrupted" : "terminated"), std::string::npos)
+      << text;
+  EXPECT_FALSE(std::filesystem::exists(out)) << "an interrupted run left " << out;
+  // Nothing next to it either (temporary files are written inside the output directory).
+  for (const auto& entry : std::filesystem::directory_iterator(out.parent_path()))
+    EXPECT_EQ(entry.path().filename().string().rfind(out.filename().string() + ".", 0),
+              std::string::npos)
+        << entry.path();
+  std::filesystem::remove(err);
+}
+
+// During the form-factor pass (gathering solver, all rows up front: the watchdog ends it) and
+// during progressive shooting (the solve loop notices the flag and unwinds).
+INSTANTIATE_TEST_SUITE_P(
+    Runs, Interrupt,
+    ::testing::Values(InterruptCase{"sigint_form_factors",
+                                    SIGINT,
+                                    0.5,
+                                    {"--elements", "20000", "--solver", "gauss-seidel", "--quiet"}},
+                      InterruptCase{"sigterm_form_factors",
+                                    SIGTERM,
+                                    0.5,
+                                    {"--elements", "20000", "--solver", "gauss-seidel", "--quiet"}},
+                      InterruptCase{"sigint_shooting",
+                                    SIGINT,
+                                    1.0,
+                                    {"--elements", "20000", "--tolerance", "0", "--max-iterations",
+                                     "2000000000", "--quiet"}}),
+    [](const ::testing::TestParamInfo<InterruptCase>& info) {
+      return std::string(info.param.name);
+    });
+
+}  // namespace
+}  // namespace rad
