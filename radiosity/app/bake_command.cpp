@@ -13,6 +13,7 @@
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "radiosity/output/gltf_export.h"
 #include "radiosity/output/image_io.h"
@@ -127,6 +128,8 @@ void runBake(BakeOptions& o) {
                                         o.noLightmap ? nullptr : &layout, materialNames);
 
   // Everything goes under temporary names; only when all are complete do they take their names.
+  throwIfInterrupted();
+  OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
   ensureDirectory(o.solve.outputDir);
   const std::filesystem::path dir(o.solve.outputDir);
   std::vector<std::unique_ptr<AtomicFile>> files;

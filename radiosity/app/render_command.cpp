@@ -13,6 +13,7 @@
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "radiosity/output/image_io.h"
 #include "radiosity/render/camera.h"
@@ -137,6 +138,8 @@ void runRender(RenderCommandOptions& o) {
 
   // Outputs: EXR (linear radiance), PNG (tone-mapped), JSON (report); renamed together at the end.
   t = Clock::now();
+  throwIfInterrupted();
+  OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
   ensureDirectory(o.solve.outputDir);
   const std::filesystem::path dir(o.solve.outputDir);
   const ToneMap toneMap =
