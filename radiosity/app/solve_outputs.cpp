@@ -17,6 +17,11 @@
 
 namespace rad {
 namespace {
+#ifdef RADIOSITY_HAS_VIEWER
+constexpr bool kWritesVtp = true;
+#else
+constexpr bool kWritesVtp = false;
+#endif
 
 nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& r, double exposure) {
   using nlohmann::json;
@@ -135,7 +140,8 @@ void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
     }
     throw;
   }
-  logInfo("wrote elements.csv, vertex_colors.ply, summary.json to " + options.outputDir);
+  logInfo("wrote the solution files (elements.csv, vertex_colors.ply, summary.json" +
+          std::string(kWritesVtp ? ", solution.vtp" : "") + ") to " + options.outputDir);
 }
 
 }  // namespace rad
