@@ -20,6 +20,8 @@ packages=(
 )
 # `scripts/setup.sh --fuzz`: clang and its libFuzzer runtime too (scripts/fuzz.sh; issue 9).
 if [[ " $* " == *" --fuzz "* ]]; then packages+=(clang libclang-rt-14-dev); fi
+# `scripts/setup.sh --bench`: matplotlib for the benchmark's PNG plots (bench/run_all.sh; issue 8).
+if [[ " $* " == *" --bench "* ]]; then packages+=(python3-matplotlib python3-numpy); fi
 
 # The Khronos glTF validator for the bake tests (npm, pinned by tools/gltf-validator/package-lock.json),
 # only where node and npm exist; the test that needs it skips with a message otherwise.
