@@ -2,6 +2,7 @@
 //   render_compare rmse IMAGE.exr REFERENCE.exr     → relative RMSE sqrt(Σ(a−r)²/Σr²), mean ratio
 //   render_compare average A.exr B.exr OUT.exr      → OUT = (A+B)/2; prints the relative RMSE of
 //       OUT's noise, estimated as ½·rmse(A, B) (two independent renders of the same image)
+//   render_compare pfm IMAGE.exr OUT.pfm             → the same pixels as a PFM (for numpy plots)
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -51,7 +52,22 @@ int main(int argc, char** argv) {
       std::printf("%.6f\n", 0.5 * relativeRmse(a, b));
       return 0;
     }
-    std::fprintf(stderr, "usage: render_compare rmse IMAGE REF | average A B OUT\n");
+    if (mode == "pfm" && argc == 4) {
+      // Portable float map: little-endian scale (negative), rows stored bottom to top.
+      const rad::ImageRgb a = rad::readExr(argv[2]);
+      std::FILE* f = std::fopen(argv[3], "wb");
+      if (!f) throw std::runtime_error(std::string("cannot write ") + argv[3]);
+      std::fprintf(f, "PF\n%d %d\n-1.0\n", a.width, a.height);
+      for (int y = a.height - 1; y >= 0; --y)
+        for (int x = 0; x < a.width; ++x) {
+          const rad::Rgb& p = a.at(x, y);
+          const float v[3] = {float(p.r), float(p.g), float(p.b)};
+          std::fwrite(v, sizeof(float), 3, f);
+        }
+      if (std::fclose(f) != 0) throw std::runtime_error(std::string("cannot write ") + argv[3]);
+      return 0;
+    }
+    std::fprintf(stderr, "usage: render_compare rmse IMAGE REF | average A B OUT | pfm IMAGE OUT\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "radiosity/app/commands.h"
+#include "radiosity/app/saved_solution.h"
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
@@ -31,6 +32,11 @@ double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+// Render's solve defaults (`solve` uses 1500 elements and 1024 rays): measured on the Cornell box
+// by bench/render_error_vs_time.py --solve-sizes (README, "Images").
+constexpr int kRenderElements = 500;
+constexpr int kRenderRaysPerElement = 256;
+
 struct RenderCommandOptions {
   SolveOptions solve;
   std::string solverName = "progressive";
@@ -41,6 +47,7 @@ struct RenderCommandOptions {
   std::vector<double> position, lookAt, up;
   std::optional<double> vfov, lensRadius, focusDistance, exposure;
   std::optional<int> width, height;
+  bool freshSolve = false;  // solve even when --out holds a reusable solution
 };
 
 Eigen::Vector3d toVector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
@@ -100,9 +107,22 @@ void runRender(RenderCommandOptions& o) {
   Scene pathScene;
   std::unique_ptr<PatchMesh> pathMesh;
   double solveSeconds = 0;
+  bool reusedSolution = false;
   auto t = Clock::now();
   if (radiosity) {
-    solved = runSolve(o.solve);
+    Scene scene = loadObjScene(o.solve.scenePath);
+    requireEmitter(scene);
+    std::string whyNot = "--fresh-solve";
+    std::optional<SolveResult> saved;
+    if (!o.freshSolve) saved = loadSavedSolution(o.solve.outputDir, scene, o.solve, whyNot);
+    if (saved) {
+      solved = std::move(*saved);
+      reusedSolution = true;
+      skip("radiosity solve", "reused the solution saved in " + o.solve.outputDir);
+    } else {
+      logInfo("solving (" + whyNot + ")");
+      solved = solveScene(std::move(scene), o.solve);
+    }
     solveSeconds = since(t);
   } else {
     pathScene = loadObjScene(o.solve.scenePath);
@@ -196,13 +216,25 @@ void runRender(RenderCommandOptions& o) {
     report["radiosity"] = {{"elements", mesh.elementCount()},
                            {"solver", solved.solverName},
                            {"converged", solved.converged},
+                           {"reused_saved_solution", reusedSolution},
                            {"form_factor_rays", solved.raysCast}};
   AtomicFile json((dir / "render.json").string());
   json.stream() << report.dump(2) << "\n";
 
+  // The solution, for the next render into this directory (not when it was reused from here).
+  std::vector<AtomicFile*> files = {&json};
+  std::unique_ptr<AtomicFile> solutionCsv, solutionJson;
+  if (radiosity && !reusedSolution && solutionIsReusable(o.solve)) {
+    solutionCsv = std::make_unique<AtomicFile>((dir / kSolutionCsv).string());
+    solutionJson = std::make_unique<AtomicFile>((dir / kSolutionJson).string());
+    writeSavedSolution(*solutionCsv, *solutionJson, solved, o.solve);
+    files.push_back(solutionCsv.get());
+    files.push_back(solutionJson.get());
+  }
+  for (AtomicFile* f : files) f->finish();
   exr.commit();
   png.commit();
-  json.commit();
+  commitAll(files);
   logInfo("wrote render.exr, render.png, render.json to " + o.solve.outputDir + " (" +
           std::to_string(render.rays.total()) + " rays in " + std::to_string(render.seconds) +
           " s)");
@@ -237,6 +269,13 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
   cmd->add_option("--focus-distance", o->focusDistance, "Distance to the plane in focus");
   cmd->add_option("--exposure", o->exposure,
                   "PNG exposure (default: 99th percentile of luminance maps to 1)");
+  cmd->add_flag("--fresh-solve", o->freshSolve,
+               "Solve even when --out holds a solution saved by an earlier render of the same "
+               "scene and solve options (otherwise it is reused)");
+  // The final gather reads the solution only at secondary hits and averages it over the
+  // hemisphere, so a coarser, cheaper solve than `solve`'s default serves an image as well.
+  o->solve.targetElements = kRenderElements;
+  o->solve.raysPerElement = kRenderRaysPerElement;
   addSolveOptions(*cmd, o->solve, o->solverName);
   addCommonFlags(*cmd);
   cmd->callback([&run, o] { run = [o] { runRender(*o); }; });

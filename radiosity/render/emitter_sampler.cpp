@@ -25,11 +25,24 @@ EmitterSampler::EmitterSampler(const Scene& scene, const PatchMesh& mesh)
   if (!cdf_.empty()) cdf_.back() = 1.0;
 }
 
+EmitterSample EmitterSampler::sample(double u, double v) const {
+  if (elements_.empty()) return {};
+  const size_t k = std::min<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin(),
+                                    elements_.size() - 1);
+  const double low = k > 0 ? cdf_[k - 1] : 0.0, width = cdf_[k] - low;
+  const double rescaled = width > 0 ? std::clamp((u - low) / width, 0.0, std::nextafter(1.0, 0.0)) : 0.5;
+  return pointOn(k, rescaled, v);
+}
+
 EmitterSample EmitterSampler::sample(double u0, double u1, double u2) const {
-  EmitterSample s;
-  if (elements_.empty()) return s;
+  if (elements_.empty()) return {};
   const size_t k = std::min<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u0) - cdf_.begin(),
                                     elements_.size() - 1);
+  return pointOn(k, u1, u2);
+}
+
+EmitterSample EmitterSampler::pointOn(size_t k, double u1, double u2) const {
+  EmitterSample s;
   s.element = elements_[k];
   const auto c = mesh_.corners(s.element);
   // Uniform point on a triangle (square-root warp).

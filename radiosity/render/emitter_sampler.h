@@ -27,10 +27,16 @@ class EmitterSampler {
   int count() const { return static_cast<int>(elements_.size()); }
   // u0 picks the element, (u1, u2) the point on it.
   EmitterSample sample(double u0, double u1, double u2) const;
+  // The same from one 2D point: u picks the element and, rescaled to [0,1) within the element's
+  // share, goes on to pick the point with v, so a stratified (u, v) set stays stratified over
+  // the emitters' whole area rather than only within each element.
+  EmitterSample sample(double u, double v) const;
   // Density per unit area with which sample() produces a point on `element` (0 for non-emitters).
   double pdfArea(int element) const { return pdfArea_[element]; }
 
  private:
+  EmitterSample pointOn(size_t k, double u1, double u2) const;  // on elements_[k]
+
   const PatchMesh& mesh_;
   std::vector<int> elements_;
   std::vector<double> cdf_;      // over elements_

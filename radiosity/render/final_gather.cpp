@@ -4,7 +4,6 @@
 #include <string>
 
 #include "radiosity/render/scattering.h"
-#include "radiosity/render/stratified.h"
 
 namespace rad {
 
@@ -48,12 +47,14 @@ double FinalGather::misWeight(double pdfA, double pdfB) {
   return a / (a + b);
 }
 
-Rgb FinalGather::directLight(const SurfaceHit& hit, Rng& rng, RayCounts& counts) const {
+Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts) const {
+  thread_local std::vector<Point2> points;
   const EmitterSampler& lights = scene_.emitters();
   const int n = options_.gatherRays;
+  sampler.get2DArray(n, points);
   Rgb sum;
   for (int k = 0; k < n; ++k) {
-    const EmitterSample s = lights.sample(rng.uniform(), rng.uniform(), rng.uniform());
+    const EmitterSample s = lights.sample(points[k].x, points[k].y);
     if (s.element < 0 || s.element == hit.element) continue;
     Eigen::Vector3d w = s.position - hit.position;
     const double d2 = w.squaredNorm();
@@ -68,14 +69,14 @@ Rgb FinalGather::directLight(const SurfaceHit& hit, Rng& rng, RayCounts& counts)
   return sum / (n * M_PI);  // irradiance / π: times ρ it is the reflected radiance
 }
 
-Rgb FinalGather::gatherLight(const SurfaceHit& hit, Rng& rng, RayCounts& counts) const {
-  thread_local std::vector<std::pair<double, double>> strata;
+Rgb FinalGather::gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts) const {
+  thread_local std::vector<Point2> points;
   const int n = options_.gatherRays;
-  nRooks(n, rng, strata);
+  sampler.get2DArray(n, points);
   Rgb sum;
   for (int k = 0; k < n; ++k) {
-    const Eigen::Vector3d d = cosineDirection(hit.normal, strata[k].first, strata[k].second);
-    sum += secondaryRadiance(hit, d, rng, counts);
+    const Eigen::Vector3d d = cosineDirection(hit.normal, points[k].x, points[k].y);
+    sum += secondaryRadiance(hit, d, sampler.rng(), counts);
   }
   return sum /
          n;  // cosine-weighted mean of incoming radiance: times ρ it is the reflected radiance
@@ -128,11 +129,19 @@ Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& position, 
   const Material& m = *hit.material;
   if (m.isSpecular()) return {};
   if (m.diffuse.maxComponent() == 0) return m.emission;
-  return m.emission + m.diffuse * (directLight(hit, rng, counts) + gatherLight(hit, rng, counts));
+  RandomSampler sampler(rng);
+  return m.emission +
+         m.diffuse * (directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts));
+}
+
+Rgb FinalGather::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
+                          RayCounts& counts) const {
+  RandomSampler sampler(rng);
+  return radiance(origin, direction, sampler, counts);
 }
 
 Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d& startDirection,
-                          Rng& rng, RayCounts& counts) const {
+                          Sampler& sampler, RayCounts& counts) const {
   Eigen::Vector3d origin = startOrigin, direction = startDirection;
   Rgb weight = Rgb::all(1.0);
   for (int depth = 0;; ++depth) {
@@ -142,7 +151,7 @@ Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vecto
     const Material& m = *hit.material;
     if (m.isSpecular()) {
       if (depth >= options_.maxSpecularDepth) return {};
-      const double u = m.kind == SurfaceKind::Dielectric ? rng.uniform() : 0.0;
+      const double u = m.kind == SurfaceKind::Dielectric ? sampler.get1D() : 0.0;
       const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
       if (!step.alive) return {};
       weight = weight * step.weight;
@@ -157,7 +166,7 @@ Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vecto
       ++counts.gathersSkipped;
       return weight * m.emission;
     }
-    const Rgb reflected = directLight(hit, rng, counts) + gatherLight(hit, rng, counts);
+    const Rgb reflected = directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts);
     return weight * (m.emission + m.diffuse * reflected);
   }
 }

@@ -27,6 +27,9 @@ class FinalGather : public Integrator {
 
   Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
                RayCounts& counts) const override;
+  // Shadow-ray points and gather directions come from `sampler` (stratified across the pixel).
+  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
+               RayCounts& counts) const override;
   std::string name() const override;
 
   // Outgoing radiance at a point of a diffuse element, seen from its front (for baking
@@ -36,8 +39,9 @@ class FinalGather : public Integrator {
 
  private:
   Rgb interpolatedRadiance(const SurfaceHit& hit) const;  // B/π at the hit, from vertex values
-  Rgb directLight(const SurfaceHit& hit, Rng& rng, RayCounts& counts) const;  // ∫ L_e cos dω / π
-  Rgb gatherLight(const SurfaceHit& hit, Rng& rng,
+  Rgb directLight(const SurfaceHit& hit, Sampler& sampler,
+                  RayCounts& counts) const;  // ∫ L_e cos dω / π
+  Rgb gatherLight(const SurfaceHit& hit, Sampler& sampler,
                   RayCounts& counts) const;  // mean incoming reflected L
   // Incoming radiance along a gather ray leaving `from`.
   Rgb secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direction, Rng& rng,

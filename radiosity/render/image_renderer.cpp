@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "radiosity/core/progress.h"
-#include "radiosity/render/stratified.h"
+#include "radiosity/render/sobol_sampler.h"
 
 namespace rad {
 
@@ -31,19 +31,18 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator,
   tbb::parallel_for(
       tbb::blocked_range<int>(0, camera.height), [&](const tbb::blocked_range<int>& r) {
         RayCounts& local = counts.local();
-        std::vector<std::pair<double, double>> pixelStrata, lensStrata;
         for (int y = r.begin(); y < r.end(); ++y) {
           for (int x = 0; x < camera.width; ++x) {
-            Rng rng(
-                streamKey(settings.seed, static_cast<uint64_t>(y) * camera.width + x, 0x52454e44));
-            nRooks(n, rng, pixelStrata);
-            nRooks(n, rng, lensStrata);
+            const uint64_t pixel = static_cast<uint64_t>(y) * camera.width + x;
+            Rng rng(streamKey(settings.seed, pixel, 0x52454e44));
+            SobolSampler sampler(settings.seed, pixel, rng);
             Rgb sum, sumSquares;
             for (int s = 0; s < n; ++s) {
+              sampler.startSample(s);
+              const Point2 film = sampler.get2D(), lens = sampler.get2D();
               Eigen::Vector3d origin, direction;
-              rays.generate(x + pixelStrata[s].first, y + pixelStrata[s].second,
-                            lensStrata[s].first, lensStrata[s].second, origin, direction);
-              const Rgb L = integrator.radiance(origin, direction, rng, local);
+              rays.generate(x + film.x, y + film.y, lens.x, lens.y, origin, direction);
+              const Rgb L = integrator.radiance(origin, direction, sampler, local);
               sum += L;
               sumSquares += L * L;
             }

@@ -10,7 +10,9 @@
 namespace rad {
 
 struct RenderSettings {
-  int samplesPerPixel = 4;  // stratified over the pixel (and the lens) by n-rooks
+  // Owen-scrambled Sobol points (SobolSampler) stratify the pixel, the lens and every dimension
+  // an integrator draws through its Sampler across the pixel's samples.
+  int samplesPerPixel = 4;
   uint64_t seed = 1;
   bool showProgress = true;
 };
@@ -18,7 +20,8 @@ struct RenderSettings {
 struct RenderOutput {
   ImageRgb image;  // mean radiance per pixel, W·m⁻²·sr⁻¹
   // Estimated variance of each pixel's mean: the sample variance of its samples / n (0 when
-  // n = 1). Stratification makes it an over-estimate, so tolerances built on it are safe.
+  // n = 1), as for independent samples. Stratification usually makes the true variance smaller
+  // (scrambled nets can exceed it at most by a small constant factor, Owen 1997).
   ImageRgb variance;
   RayCounts rays;
   double seconds = 0;

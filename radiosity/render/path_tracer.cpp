@@ -21,8 +21,14 @@ constexpr int kSpecularRouletteAfter = 8;
 PathTracer::PathTracer(const RenderScene& scene, PathTracerOptions options)
     : scene_(scene), options_(options) {}
 
+Rgb PathTracer::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
+                         RayCounts& counts) const {
+  RandomSampler sampler(rng);
+  return radiance(origin, direction, sampler, counts);
+}
+
 Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d& startDirection,
-                         Rng& rng, RayCounts& counts) const {
+                         Sampler& sampler, RayCounts& counts) const {
   const EmitterSampler& lights = scene_.emitters();
   Eigen::Vector3d origin = startOrigin, direction = startDirection;
   Rgb result, throughput = Rgb::all(1.0);
@@ -39,7 +45,7 @@ Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector
     const Material& m = *hit.material;
 
     if (m.isSpecular()) {
-      const double u = m.kind == SurfaceKind::Dielectric ? rng.uniform() : 0.0;
+      const double u = m.kind == SurfaceKind::Dielectric ? sampler.get1D() : 0.0;
       const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
       if (!step.alive) break;
       throughput = throughput * step.weight;
@@ -48,7 +54,7 @@ Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector
       specularBefore = true;
       if (++specularRun > kSpecularRouletteAfter) {
         const double q = std::min(0.95, throughput.maxComponent());
-        if (rng.uniform() >= q) break;
+        if (sampler.get1D() >= q) break;
         throughput *= 1.0 / q;
       }
       continue;
@@ -70,7 +76,8 @@ Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector
     if (rho.maxComponent() == 0) break;
 
     // Next-event estimation: one point on an emitter, weighed against the cosine bounce.
-    const EmitterSample s = lights.sample(rng.uniform(), rng.uniform(), rng.uniform());
+    const Point2 lightPoint = sampler.get2D();
+    const EmitterSample s = lights.sample(lightPoint.x, lightPoint.y);
     if (s.element >= 0 && s.element != hit.element) {
       Eigen::Vector3d w = s.position - hit.position;
       const double d2 = w.squaredNorm();
@@ -87,7 +94,8 @@ Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector
     }
 
     // Cosine-weighted bounce: f·cos/pdf = ρ.
-    direction = cosineDirection(hit.normal, rng.uniform(), rng.uniform());
+    const Point2 bounce = sampler.get2D();
+    direction = cosineDirection(hit.normal, bounce.x, bounce.y);
     bsdfPdf = hit.normal.dot(direction) / M_PI;
     if (!(bsdfPdf > 0)) break;
     origin = scene_.spawn(hit, direction);
@@ -95,7 +103,7 @@ Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector
     specularBefore = false;
     if (++diffuseBounces >= options_.rouletteAfter) {
       const double q = std::min(0.95, throughput.maxComponent());
-      if (rng.uniform() >= q) break;
+      if (sampler.get1D() >= q) break;
       throughput *= 1.0 / q;
     }
   }

@@ -18,6 +18,10 @@ class PathTracer : public Integrator {
   PathTracer(const RenderScene& scene, PathTracerOptions options = {});
   Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
                RayCounts& counts) const override;
+  // Each bounce's light point, direction and roulette come from `sampler`, so the first bounces
+  // are stratified across the pixel's samples as the final gather's are.
+  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
+               RayCounts& counts) const override;
   std::string name() const override { return "path tracing"; }
 
  private:

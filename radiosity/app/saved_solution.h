@@ -1,0 +1,42 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "radiosity/app/solve_job.h"
+#include "radiosity/core/atomic_file.h"
+
+namespace rad {
+
+// A radiosity solution that `radiosity render --method radiosity` keeps in its output directory
+// (solution.csv: B per element in the elements.csv format; solution.json: what it was solved
+// from) and reuses when the same scene is rendered again with the same solve options, so that
+// renders from other cameras or with other sample counts skip the solve.
+//
+// Reuse re-meshes the scene (uniform meshing is deterministic) and reads B back; it needs the
+// fingerprint of the scene's content and of every solve option that shapes the mesh or B to match.
+// A solution from adaptive refinement is not kept: its mesh depends on the solve.
+
+// Hash of the loaded scene (positions, polygons, materials) and the solve options that decide
+// the mesh and B; threads, output directory and time limit excepted.
+std::string solutionFingerprint(const Scene& scene, const SolveOptions& options);
+
+// Whether `options` give a mesh that re-meshing reproduces (no adaptive refinement).
+bool solutionIsReusable(const SolveOptions& options);
+
+// Loads the solution saved in `dir` for `scene` and `options`. Returns nothing (and sets
+// `whyNot`) when there is none or it was made from another scene or other options. Throws
+// InputError naming the file and line when the saved files match the fingerprint but are
+// malformed or describe another mesh (edited or truncated by hand).
+std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene& scene,
+                                             const SolveOptions& options, std::string& whyNot);
+
+// Writes solution.csv and solution.json into the temporary files `csv` and `json` (the caller
+// commits them with its other outputs).
+void writeSavedSolution(AtomicFile& csv, AtomicFile& json, const SolveResult& result,
+                        const SolveOptions& options);
+
+inline constexpr const char* kSolutionCsv = "solution.csv";
+inline constexpr const char* kSolutionJson = "solution.json";
+
+}  // namespace rad
