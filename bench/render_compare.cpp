@@ -1,11 +1,16 @@
 // Compares renders for bench/render_error_vs_time.py (no numpy here, so EXR arithmetic in C++).
-//   render_compare rmse IMAGE.exr REFERENCE.exr     → relative RMSE sqrt(Σ(a−r)²/Σr²), mean ratio
+//   render_compare rmse IMAGE.exr REFERENCE.exr     → relative RMSE sqrt(Σ(a−r)²/Σr²), mean ratio,
+//       and the same two over the pixels away from the emitters seen directly ("surfaces": every
+//       pixel farther than one pixel from one whose reference value is at least half the
+//       brightest), where the emitters' pixels no longer dominate Σr²
 //   render_compare average A.exr B.exr OUT.exr      → OUT = (A+B)/2; prints the relative RMSE of
 //       OUT's noise, estimated as ½·rmse(A, B) (two independent renders of the same image)
 //   render_compare pfm IMAGE.exr OUT.pfm             → the same pixels as a PFM (for numpy plots)
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
+#include <algorithm>
 
 #include "radiosity/output/image_io.h"
 
@@ -21,10 +26,50 @@ double relativeRmse(const rad::ImageRgb& a, const rad::ImageRgb& r) {
   return std::sqrt(diff2 / ref2);
 }
 
+double relativeRmse(const rad::ImageRgb& a, const rad::ImageRgb& r, const std::vector<char>& mask) {
+  double diff2 = 0, ref2 = 0;
+  for (size_t p = 0; p < r.pixels.size(); ++p) {
+    if (!mask[p]) continue;
+    const rad::Rgb d = a.pixels[p] - r.pixels[p];
+    diff2 += (d * d).sum();
+    ref2 += (r.pixels[p] * r.pixels[p]).sum();
+  }
+  return std::sqrt(diff2 / ref2);
+}
+
 double meanValue(const rad::ImageRgb& a) {
   double s = 0;
   for (const rad::Rgb& p : a.pixels) s += p.sum();
   return s / (3.0 * a.pixels.size());
+}
+
+double meanRatio(const rad::ImageRgb& a, const rad::ImageRgb& r, const std::vector<char>& mask) {
+  double sa = 0, sr = 0;
+  for (size_t p = 0; p < r.pixels.size(); ++p)
+    if (mask[p]) {
+      sa += a.pixels[p].sum();
+      sr += r.pixels[p].sum();
+    }
+  return sa / sr;
+}
+
+// Pixels farther than one pixel (8-neighbourhood) from any pixel whose reference value (sum of
+// channels) is at least half the image's brightest: the surfaces, without the emitters seen.
+std::vector<char> surfaceMask(const rad::ImageRgb& r) {
+  double brightest = 0;
+  for (const rad::Rgb& p : r.pixels) brightest = std::max(brightest, p.sum());
+  std::vector<char> mask(r.pixels.size(), 1);
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x) {
+      if (r.at(x, y).sum() < 0.5 * brightest) continue;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if (u >= 0 && v >= 0 && u < r.width && v < r.height)
+            mask[static_cast<size_t>(v) * r.width + u] = 0;
+        }
+    }
+  return mask;
 }
 
 void requireSameSize(const rad::ImageRgb& a, const rad::ImageRgb& b) {
@@ -39,7 +84,9 @@ int main(int argc, char** argv) {
     if (mode == "rmse" && argc == 4) {
       const rad::ImageRgb a = rad::readExr(argv[2]), r = rad::readExr(argv[3]);
       requireSameSize(a, r);
-      std::printf("%.6f %.6f\n", relativeRmse(a, r), meanValue(a) / meanValue(r));
+      const std::vector<char> surfaces = surfaceMask(r);
+      std::printf("%.6f %.6f %.6f %.6f\n", relativeRmse(a, r), meanValue(a) / meanValue(r),
+                  relativeRmse(a, r, surfaces), meanRatio(a, r, surfaces));
       return 0;
     }
     if (mode == "average" && argc == 5) {

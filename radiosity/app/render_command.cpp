@@ -32,7 +32,7 @@ double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// Render's solve defaults (`solve` uses 1500 elements and 1024 rays): measured on the Cornell box
+// Render's solve defaults (`solve` uses 1500 elements and 1024 rays), measured on the Cornell box
 // by bench/render_error_vs_time.py --solve-sizes (README, "Images").
 constexpr int kRenderElements = 500;
 constexpr int kRenderRaysPerElement = 256;
@@ -41,7 +41,10 @@ struct RenderCommandOptions {
   SolveOptions solve;
   std::string solverName = "progressive";
   std::string method = "radiosity";
-  int gather = 64;
+  // One shadow and one gather ray per pixel sample: the sampler stratifies them across the
+  // pixel's samples, so 16 samples give 16 of each per pixel, and the camera rays that resolve
+  // edges come at a third of the cost of gather 4 (bench/render_error_vs_time.py).
+  int gather = 1;
   int spp = 0;  // 0: the method's default
   std::string cameraFile;
   std::vector<double> position, lookAt, up;
@@ -89,7 +92,7 @@ void runRender(RenderCommandOptions& o) {
   if (o.spp < 0) throw InputError("--spp must be >= 1");
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
   const bool radiosity = o.method == "radiosity";
-  const int spp = o.spp > 0 ? o.spp : (radiosity ? 4 : 64);
+  const int spp = o.spp > 0 ? o.spp : (radiosity ? 16 : 64);
   o.solve.solver = parseSolverKind(o.solverName);
   const Camera camera = resolveCamera(o);  // before any long work: a bad camera fails at once
 
@@ -256,7 +259,7 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
          "--gather", o->gather,
          "Final-gather rays (and shadow rays) per diffuse eye hit; 0: interpolated preview")
       ->default_val(o->gather);
-  cmd->add_option("--spp", o->spp, "Samples per pixel (default: 4 radiosity, 64 path)")
+  cmd->add_option("--spp", o->spp, "Samples per pixel (default: 16 radiosity, 64 path)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--camera", o->cameraFile, "Camera JSON file (default: <scene>.camera.json)");
   cmd->add_option("--position", o->position, "Camera position x y z")->expected(3);

@@ -145,8 +145,8 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
       throw InputError(jsonPath, 0, "unreadable saved solution: " + std::string(e.what()));
     }
   }
-  if (!meta.is_object() || meta.value("format", "") != kFormat ||
-      !meta.contains("fingerprint") || !meta["fingerprint"].is_string())
+  if (!meta.is_object() || meta.value("format", "") != kFormat || !meta.contains("fingerprint") ||
+      !meta["fingerprint"].is_string())
     throw InputError(jsonPath, 0,
                      std::string("not a saved solution (expected \"format\": \"") + kFormat +
                          "\" and a \"fingerprint\"); delete it to solve again");
@@ -176,8 +176,9 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
     const std::vector<std::string> f = splitCsv(line);
     if (f.size() != 16) throw InputError(csvPath, lineNumber, "expected 16 comma-separated fields");
     if (element >= count)
-      throw InputError(csvPath, lineNumber,
-                       "more elements than the re-meshed scene has (" + std::to_string(count) + ")");
+      throw InputError(
+          csvPath, lineNumber,
+          "more elements than the re-meshed scene has (" + std::to_string(count) + ")");
     if (parseNumber(f[0], csvPath, lineNumber) != element)
       throw InputError(csvPath, lineNumber, "expected element " + std::to_string(element));
     const Eigen::Vector3d c(parseNumber(f[4], csvPath, lineNumber),
@@ -190,8 +191,7 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
                            "solution to solve again");
     Rgb b(parseNumber(f[10], csvPath, lineNumber), parseNumber(f[11], csvPath, lineNumber),
           parseNumber(f[12], csvPath, lineNumber));
-    if (b.minComponent() < 0)
-      throw InputError(csvPath, lineNumber, "negative radiosity");
+    if (b.minComponent() < 0) throw InputError(csvPath, lineNumber, "negative radiosity");
     result.radiosity[element++] = b;
   }
   if (element != count)
@@ -201,7 +201,8 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   result.scene = scene;
   result.solverName = meta.value("solver", std::string("saved")) + " (reused)";
   result.converged = meta.value("converged", false);
-  result.maxArea = options.maxArea > 0 ? options.maxArea : mesh.totalArea() / options.targetElements;
+  result.maxArea =
+      options.maxArea > 0 ? options.maxArea : mesh.totalArea() / options.targetElements;
   return result;
 }
 

@@ -20,7 +20,8 @@ using testing::runRadiosity;
 using testing::scratchPath;
 
 const std::string kScene = std::string(RADIOSITY_DATA_DIR) + "/tests/mirror_room.obj";
-const std::string kOptions = " --width 12 --height 10 --spp 2 --gather 2 --elements 120 --rays 64 -q";
+const std::string kOptions =
+    " --width 12 --height 10 --spp 2 --gather 2 --elements 120 --rays 64 -q";
 
 nlohmann::json report(const fs::path& dir) {
   std::ifstream in(dir / "render.json");
@@ -49,9 +50,14 @@ TEST(CliRenderReuse, SecondRenderReusesTheSolutionAndGivesTheSameImage) {
     for (int c = 0; c < 3; ++c) ASSERT_EQ(second.pixels[p][c], fresh.pixels[p][c]) << p;
 
   // Other solve options, or --fresh-solve, solve again.
-  ASSERT_EQ(runRadiosity("render " + kScene + " --out " + out.string() + kOptions + " --seed 5").exitCode, 0);
+  ASSERT_EQ(
+      runRadiosity("render " + kScene + " --out " + out.string() + kOptions + " --seed 5").exitCode,
+      0);
   EXPECT_FALSE(reused(out));
-  ASSERT_EQ(runRadiosity("render " + kScene + " --out " + out.string() + kOptions + " --seed 5 --fresh-solve").exitCode, 0);
+  ASSERT_EQ(runRadiosity("render " + kScene + " --out " + out.string() + kOptions +
+                         " --seed 5 --fresh-solve")
+                .exitCode,
+            0);
   EXPECT_FALSE(reused(out));
   fs::remove_all(out);
 }

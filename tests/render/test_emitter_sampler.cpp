@@ -14,7 +14,8 @@ namespace {
 
 TEST(EmitterSampler, TwoDimensionalSamplesCoverTheEmittersUniformly) {
   // The Cornell light (0.13 × 0.105 m, uniform Ke) split into elements of unequal areas.
-  const Scene scene = loadObjScene(std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box.obj");
+  const Scene scene =
+      loadObjScene(std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box.obj");
   PatchMesh mesh = buildPatchMesh(scene);
   mesh.subdivideUniform(mesh.totalArea() / 300);
   const EmitterSampler lights(scene, mesh);
@@ -26,7 +27,8 @@ TEST(EmitterSampler, TwoDimensionalSamplesCoverTheEmittersUniformly) {
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   std::vector<double> hits(mesh.elementCount(), 0.0);
   double emitterArea = 0;
-  for (int e = 0; e < mesh.elementCount(); ++e) emitterArea += lights.pdfArea(e) > 0 ? mesh.area(e) : 0;
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    emitterArea += lights.pdfArea(e) > 0 ? mesh.area(e) : 0;
   for (int i = 0; i < kN; ++i)
     for (int j = 0; j < kN; ++j) {
       const EmitterSample s = lights.sample((i + 0.5) / kN, (j + 0.5) / kN);
