@@ -2,6 +2,7 @@
 
 #include <OpenMesh/Core/System/omstream.hh>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <stdexcept>
 
 #include "meshing/polygon_triangulation.h"
@@ -26,6 +27,15 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
   mesh_.add_property(radiosity_, "B");
   mesh_.add_property(unshot_, "unshot");
 
+  for (const PatchPolygon& polygon : polygons) {
+    if (!polygon.uvs.empty() && polygon.uvs.size() != polygon.vertices.size())
+      throw std::invalid_argument("PatchMesh: a polygon needs one UV per corner");
+    if (polygon.uvs.empty() != polygons.front().uvs.empty())
+      throw std::invalid_argument("PatchMesh: some polygons have UVs and others not");
+  }
+  hasUvs_ = !polygons.empty() && !polygons.front().uvs.empty();
+  if (hasUvs_) mesh_.add_property(uvs_, "uv");
+
   std::vector<TriMesh::VertexHandle> handles(positions.size());
   for (size_t i = 0; i < positions.size(); ++i) handles[i] = mesh_.add_vertex(toOm(positions[i]));
 
@@ -43,23 +53,36 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
       boundsMax_ = boundsMax_.cwiseMax(positions[v]);
     }
     const int patch = patchCount_++;
-    for (const auto& t : triangulatePolygon(points))
+    for (const auto& t : triangulatePolygon(points)) {
+      const std::array<Eigen::Vector2d, 3> uvs =
+          hasUvs_ ? std::array<Eigen::Vector2d, 3>{polygon.uvs[t[0]], polygon.uvs[t[1]],
+                                                   polygon.uvs[t[2]]}
+                  : std::array<Eigen::Vector2d, 3>{};
       addTriangle(handles[polygon.vertices[t[0]]], handles[polygon.vertices[t[1]]],
-                  handles[polygon.vertices[t[2]]], patch, polygon.material);
+                  handles[polygon.vertices[t[2]]], patch, polygon.material,
+                  hasUvs_ ? uvs.data() : nullptr);
+    }
   }
   inputTriangles_ = elementCount();
 }
 
 void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
-                            TriMesh::VertexHandle c, int patch, int material) {
+                            TriMesh::VertexHandle c, int patch, int material,
+                            const Eigen::Vector2d* uvs) {
   TriMesh::FaceHandle f = mesh_.add_face(a, b, c);
   if (!f.is_valid()) {
     // Non-manifold or inconsistently wound contact with a neighbour: give this triangle its own
     // vertices. It stays conforming within itself; the seam is a real crease in the input.
     // Copies: point() refers into OpenMesh's point array, which add_vertex() may reallocate.
     const TriMesh::Point pa = mesh_.point(a), pb = mesh_.point(b), pc = mesh_.point(c);
-    f = mesh_.add_face(mesh_.add_vertex(pa), mesh_.add_vertex(pb), mesh_.add_vertex(pc));
+    a = mesh_.add_vertex(pa), b = mesh_.add_vertex(pb), c = mesh_.add_vertex(pc);
+    f = mesh_.add_face(a, b, c);
     if (!f.is_valid()) throw std::runtime_error("PatchMesh: OpenMesh rejected a triangle");
+  }
+  if (uvs) {
+    FaceUvs& face = mesh_.property(uvs_, f);
+    face.vertex = {a.idx(), b.idx(), c.idx()};
+    for (int k = 0; k < 3; ++k) face.uv[2 * k] = uvs[k].x(), face.uv[2 * k + 1] = uvs[k].y();
   }
   mesh_.property(patchId_, f) = patch;
   mesh_.property(materialId_, f) = material;
@@ -87,6 +110,20 @@ std::array<Eigen::Vector3d, 3> PatchMesh::corners(int element) const {
   int k = 0;
   for (auto vh : mesh_.fv_range(face(element))) c[k++] = toEigen(mesh_.point(vh));
   return c;
+}
+
+std::array<Eigen::Vector2d, 3> PatchMesh::cornerUvs(int element) const {
+  if (!hasUvs_) throw std::logic_error("PatchMesh::cornerUvs: the mesh has no UVs");
+  const FaceUvs& face = mesh_.property(uvs_, this->face(element));
+  const std::array<int, 3> v = cornerVertices(element);
+  std::array<Eigen::Vector2d, 3> uv;
+  for (int k = 0; k < 3; ++k) {
+    const int j = static_cast<int>(std::find(face.vertex.begin(), face.vertex.end(), v[k]) -
+                                   face.vertex.begin());
+    if (j == 3) throw std::logic_error("PatchMesh::cornerUvs: UVs out of step with the faces");
+    uv[k] = {face.uv[2 * j], face.uv[2 * j + 1]};
+  }
+  return uv;
 }
 
 Eigen::Vector3d PatchMesh::position(int vertex) const {
@@ -145,15 +182,40 @@ TriMesh::EdgeHandle PatchMesh::longestEdge(TriMesh::FaceHandle f) const {
 
 void PatchMesh::splitEdge(TriMesh::EdgeHandle e) {
   const auto h = mesh_.halfedge_handle(e, 0);
+  const int from = mesh_.from_vertex_handle(h).idx(), to = mesh_.to_vertex_handle(h).idx();
   const auto mid =
       mesh_.add_vertex((mesh_.point(mesh_.from_vertex_handle(h)) + mesh_.point(mesh_.to_vertex_handle(h))) * 0.5);
-  // split_copy gives each new face the properties (patch, material, level) of the face it was
-  // cut from, so every face around the new vertex is a child one level below its parent.
+  // split_copy gives each new face the properties (patch, material, level, UVs) of the face it
+  // was cut from, so every face around the new vertex is a child one level below its parent.
   mesh_.split_copy(e, mid);
   for (auto f : mesh_.vf_range(mid)) {
     mesh_.property(level_, f) += 1;
     updateArea(f);
+    if (hasUvs_) splitUvs(f, from, to, mid.idx());
   }
+}
+
+void PatchMesh::splitUvs(TriMesh::FaceHandle f, int from, int to, int mid) {
+  // The child still holds its parent's UVs: its corners are the parent's, except the new vertex
+  // in the middle of the split edge, whose UV is the mean of that edge's two ends in the parent.
+  const FaceUvs parent = mesh_.property(uvs_, f);
+  auto parentUv = [&](int vertex, int axis) {
+    const int j = static_cast<int>(std::find(parent.vertex.begin(), parent.vertex.end(), vertex) -
+                                   parent.vertex.begin());
+    if (j == 3) throw std::logic_error("PatchMesh: a split face lost its parent's corner");
+    return parent.uv[2 * j + axis];
+  };
+  FaceUvs child;
+  int k = 0;
+  for (auto vh : mesh_.fv_range(f)) {
+    child.vertex[k] = vh.idx();
+    for (int axis = 0; axis < 2; ++axis)
+      child.uv[2 * k + axis] = vh.idx() == mid
+                                   ? 0.5 * (parentUv(from, axis) + parentUv(to, axis))
+                                   : parentUv(vh.idx(), axis);
+    ++k;
+  }
+  mesh_.property(uvs_, f) = child;
 }
 
 void PatchMesh::refineAcross(TriMesh::FaceHandle f, int depth) {

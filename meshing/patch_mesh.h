@@ -3,6 +3,7 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <Eigen/Core>
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace rad {
@@ -16,8 +17,15 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<PatchMeshTraits>;
 
 // One input polygon: the unit of material and of the scene's description.
 struct PatchPolygon {
+  PatchPolygon() = default;
+  PatchPolygon(std::vector<int> vertices, int material, std::vector<Eigen::Vector2d> uvs = {})
+      : vertices(std::move(vertices)), material(material), uvs(std::move(uvs)) {}
+
   std::vector<int> vertices;  // indices into the positions array, counter-clockwise from the front
   int material = 0;
+  // Texture coordinates per corner (the scene's own UVs), or empty. Either every polygon has
+  // them or none does.
+  std::vector<Eigen::Vector2d> uvs;
 };
 
 // The meshed scene: patches (input polygons) split into triangular elements, kept conforming
@@ -42,6 +50,12 @@ class PatchMesh {
   std::array<int, 3> cornerVertices(int element) const;
   std::array<Eigen::Vector3d, 3> corners(int element) const;
   Eigen::Vector3d position(int vertex) const;
+  // Whether the elements carry the input polygons' texture coordinates.
+  bool hasUvs() const { return hasUvs_; }
+  // The texture coordinates at the element's corners (cornerVertices order), linear over its
+  // polygon's triangles: a vertex made by bisection takes the mean of its edge's two ends.
+  // Requires hasUvs().
+  std::array<Eigen::Vector2d, 3> cornerUvs(int element) const;
   // How many times the element's ancestry was bisected (0 for the patch's own triangles).
   int level(int element) const { return mesh_.property(level_, face(element)); }
 
@@ -80,11 +94,18 @@ class PatchMesh {
   static TriMesh::FaceHandle face(int element) { return TriMesh::FaceHandle(element); }
 
  private:
+  // Per-face texture coordinates, keyed by vertex: the corners of a face are found by walking
+  // its half-edges, whose starting corner an edge split may change.
+  struct FaceUvs {
+    std::array<int, 3> vertex{};
+    std::array<double, 6> uv{};  // (u, v) per entry of `vertex`
+  };
   void addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b, TriMesh::VertexHandle c,
-                   int patch, int material);
+                   int patch, int material, const Eigen::Vector2d* uvs);
   TriMesh::EdgeHandle longestEdge(TriMesh::FaceHandle f) const;
   void refineAcross(TriMesh::FaceHandle f, int depth);
   void splitEdge(TriMesh::EdgeHandle e);
+  void splitUvs(TriMesh::FaceHandle f, int from, int to, int mid);
   void updateArea(TriMesh::FaceHandle f);
 
   TriMesh mesh_;
@@ -93,6 +114,8 @@ class PatchMesh {
   bool shootersMarked_ = false;
   OpenMesh::FPropHandleT<double> area_;
   OpenMesh::FPropHandleT<Eigen::Vector3d> radiosity_, unshot_;
+  OpenMesh::FPropHandleT<FaceUvs> uvs_;  // only when hasUvs_
+  bool hasUvs_ = false;
   int patchCount_ = 0;
   int inputTriangles_ = 0;
   Eigen::Vector3d boundsMin_, boundsMax_;

@@ -8,6 +8,7 @@
 
 #include "meshing/lightmap_charts.h"
 #include "meshing/lightmap_packing.h"
+#include "meshing/mesh_uv_layout.h"
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/app/commands.h"
 #include "radiosity/app/solve_job.h"
@@ -23,6 +24,8 @@
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/render_scene.h"
+#include "radiosity/scene/lightmap_uv_check.h"
+#include "radiosity/scene/obj_loader.h"
 #include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
@@ -37,6 +40,7 @@ struct BakeOptions {
   int dilation = -1;  // -1: the padding
   double chartAngle = 30;
   bool noLightmap = false;
+  bool sceneUvs = false;  // bake into the scene's own texture coordinates
   int gather = 0;  // per-texel final gather rays; 0: interpolate the solution
 };
 
@@ -51,7 +55,14 @@ void runBake(BakeOptions& o) {
     throw InputError("--dilation " + std::to_string(o.dilation) + " exceeds --padding " +
                      std::to_string(o.padding) +
                      ": dilated texels of neighbouring charts would meet");
-  SolveResult result = runSolve(o.solve);
+  // The scene's UVs are checked before the solve, so a bad layout fails in seconds.
+  const auto loadStart = std::chrono::steady_clock::now();
+  Scene scene = loadObjScene(o.solve.scenePath);
+  if (o.sceneUvs) checkLightmapUvs(scene);
+  const double loadSeconds = since(loadStart);
+  SolveResult result = solveScene(std::move(scene), o.solve);
+  result.times.load = loadSeconds;
+  result.times.total += loadSeconds;
   const PatchMesh& mesh = *result.mesh;
   const auto start = std::chrono::steady_clock::now();
 
@@ -75,9 +86,15 @@ void runBake(BakeOptions& o) {
   std::vector<std::uint8_t> png;
   if (!o.noLightmap) {
     auto t = std::chrono::steady_clock::now();
-    const LightmapCharts charts = buildLightmapCharts(mesh, {o.chartAngle});
     try {
-      layout = packLightmapCharts(charts, {o.texelSize, o.lightmapSize, o.padding});
+      if (o.sceneUvs) {
+        const int side = o.texelSize > 0 ? atlasSideForTexelSize(mesh, o.texelSize, 16384)
+                                         : o.lightmapSize;
+        layout = layoutFromMeshUvs(mesh, side, side, o.padding);
+      } else {
+        layout = packLightmapCharts(buildLightmapCharts(mesh, {o.chartAngle}),
+                                    {o.texelSize, o.lightmapSize, o.padding});
+      }
     } catch (const std::invalid_argument& e) {
       throw InputError(o.solve.scenePath, 0, e.what());
     }
@@ -102,10 +119,17 @@ void runBake(BakeOptions& o) {
       lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation);
     }
     png = encodePng(lightmap.radiance, toneMap);
-    logInfo("lightmap: " + std::to_string(charts.charts.size()) + " charts, " +
+    if (lightmap.crowdedTexels > 0)
+      logWarning(o.solve.scenePath + ": " + std::to_string(lightmap.crowdedTexels) +
+                 " texels lie next to two UV islands (islands less than 2 texels apart at " +
+                 std::to_string(layout.width) + "×" + std::to_string(layout.height) +
+                 "): bilinear filtering bleeds there; space the islands or lower --lightmap-size");
+    logInfo("lightmap: " + std::string(o.sceneUvs ? "the scene's UVs, " : "") +
+            std::to_string(layout.rects.size()) + " charts, " +
             std::to_string(layout.width) + "×" + std::to_string(layout.height) + " texels of " +
             std::to_string(layout.texelSize) + " scene units");
-    summary["lightmap"] = {{"charts", charts.charts.size()},
+    summary["lightmap"] = {{"uvs", o.sceneUvs ? "scene" : "generated"},
+                           {"charts", layout.rects.size()},
                            {"width", layout.width},
                            {"height", layout.height},
                            {"texel_size", layout.texelSize},
@@ -115,6 +139,7 @@ void runBake(BakeOptions& o) {
                            {"texels_conservative", lightmap.count(TexelState::Conservative)},
                            {"texels_dilated", lightmap.count(TexelState::Dilated)},
                            {"texels_empty", lightmap.count(TexelState::Empty)},
+                           {"texels_next_to_two_charts", lightmap.crowdedTexels},
                            {"chart_seconds", chartSeconds},
                            {"gather_rays", o.gather},
                            {"bake_seconds", since(t)},
@@ -187,11 +212,19 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
                    "interpolate the solution")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
-  bake->add_option("--chart-angle", o->chartAngle, "Largest normal angle within one chart, degrees")
-      ->default_val(o->chartAngle)
-      ->check(CLI::Range(0.0, 89.0));
-  bake->add_flag("--no-lightmap,--vertex-colors-only", o->noLightmap,
-                 "Vertex colours only: vertex_colors.ply and an unlit scene_baked.glb");
+  auto* angle =
+      bake->add_option("--chart-angle", o->chartAngle,
+                       "Largest normal angle within one chart, degrees")
+          ->default_val(o->chartAngle)
+          ->check(CLI::Range(0.0, 89.0));
+  auto* noLightmap =
+      bake->add_flag("--no-lightmap,--vertex-colors-only", o->noLightmap,
+                     "Vertex colours only: vertex_colors.ply and an unlit scene_baked.glb");
+  bake->add_flag("--use-scene-uvs", o->sceneUvs,
+                 "Bake into the scene's own texture coordinates (every face needs 'vt', in [0, 1], "
+                 "without overlaps) instead of generating lightmap UVs; charts are its UV islands")
+      ->excludes(angle)
+      ->excludes(noLightmap);
   addCommonFlags(*bake);
   bake->callback([&run, o] { run = [o] { runBake(*o); }; });
 }

@@ -146,6 +146,9 @@ void writeBakedGlb(std::ostream& out, const BakedMesh& mesh,
     if (lightmap) {
       material.pbrMetallicRoughness.baseColorFactor = {0, 0, 0, 1};
       material.emissiveTexture.index = 0;
+      // The lightmap set, as engines expect; TEXCOORD_0 holds the same UVs for viewers that read
+      // only the first set. Blender's importer maps it to the UV map "UVMap.001".
+      material.emissiveTexture.texCoord = 1;
       material.emissiveFactor = {1, 1, 1};
     } else {
       material.pbrMetallicRoughness.baseColorFactor = {1, 1, 1, 1};

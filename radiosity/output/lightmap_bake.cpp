@@ -142,15 +142,43 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
     gathering.finish();
   }
 
-  // Dilation, one ring at a time from a snapshot, so a ring reads only earlier rings.
+  // Texels next to (or on) the own texels of two charts: a bilinear lookup inside either chart
+  // may read them, so one of the two bleeds. Never with packed charts (their own texels are at
+  // least 2 × padding + 1 apart); scene UVs can place islands that close.
+  auto ownCharts = [&](int x, int y, int& first, int& second) {
+    first = second = -1;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx, ny = y + dy;
+        if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+        const size_t j = map.index(nx, ny);
+        if (map.element[j] < 0) continue;
+        const int c = map.chart[j];
+        if (first < 0 || c == first) first = c;
+        else if (second < 0 || c < second) second = c;
+      }
+  };
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      int first, second;
+      ownCharts(x, y, first, second);
+      map.crowdedTexels += second >= 0;
+    }
+
+  // Dilation, one ring at a time from a snapshot, so a ring reads only earlier rings. A texel
+  // next to a chart's own texels takes that chart (bilinear lookups inside it read the texel); one
+  // next to the own texels of two charts stays empty, as it cannot serve both.
   for (int ring = 0; ring < dilationRadius; ++ring) {
     const std::vector<int> chartBefore = map.chart;
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) {
         const size_t i = map.index(x, y);
         if (chartBefore[i] >= 0) continue;
-        int chosen = -1;
-        for (int dy = -1; dy <= 1; ++dy)
+        int owner, other;
+        ownCharts(x, y, owner, other);
+        if (other >= 0) continue;
+        int chosen = owner;
+        for (int dy = -1; dy <= 1 && owner < 0; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             const int nx = x + dx, ny = y + dy;
             if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;

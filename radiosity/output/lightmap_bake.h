@@ -27,6 +27,9 @@ struct Lightmap {
   std::vector<int> element;  // per texel, -1 where Dilated or Empty
   std::vector<TexelState> state;
   int dilationRadius = 0;
+  // Texels next to the own (covered or partly covered) texels of two charts, where bilinear
+  // filtering bleeds between them: 0 for packed charts; scene UVs may put islands that close.
+  size_t crowdedTexels = 0;
 
   size_t index(int x, int y) const { return static_cast<size_t>(y) * radiance.width + x; }
   size_t count(TexelState s) const;
@@ -38,7 +41,8 @@ struct Lightmap {
 // the element's point nearest their centre, so every element owns texels and bilinear lookups
 // inside an element read only its chart. Then `dilationRadius` rings of empty texels around each
 // chart (at most the layout's padding) take the mean of their filled neighbours of one chart —
-// never of two. Throws std::invalid_argument when dilationRadius exceeds the padding.
+// never of two; a texel next to the own texels of two charts stays empty. Throws
+// std::invalid_argument when dilationRadius exceeds the padding.
 //
 // With `evaluate`, every texel an element covers (fully or in part) takes evaluate(element,
 // barycentric, texel) instead of the interpolated value — e.g. a per-texel final gather — computed

@@ -1,6 +1,7 @@
 #include "radiosity/output/lightmap_baked_mesh.h"
 
 #include <map>
+#include <tuple>
 #include <stdexcept>
 #include <utility>
 
@@ -13,19 +14,22 @@ BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interp
     throw std::invalid_argument("makeBakedMesh: one radiance value per output vertex expected");
   BakedMesh out;
   out.materialNames = materialNames;
-  std::map<std::pair<int, int>, int> index;  // (interpolated vertex, chart) → output vertex
+  // (interpolated vertex, chart, lightmap UV) → output vertex. Within a generated chart a vertex
+  // has one UV; a scene's UV island may still cut a vertex (a seam ending inside the island).
+  std::map<std::tuple<int, int, double, double>, int> index;
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const int chart = layout ? layout->chartOfElement[e] : 0;
     std::array<int, 3> tri;
     for (int k = 0; k < 3; ++k) {
       const int v = interpolation.triangle(e)[k];
-      auto [it, inserted] =
-          index.emplace(std::make_pair(v, chart), static_cast<int>(out.positions.size()));
+      const Eigen::Vector2d uv = layout ? layout->uv(e, k) : Eigen::Vector2d::Zero();
+      auto [it, inserted] = index.emplace(std::make_tuple(v, chart, uv.x(), uv.y()),
+                                          static_cast<int>(out.positions.size()));
       if (inserted) {
         out.positions.push_back(interpolation.position(v));
         out.normals.push_back(interpolation.normal(v));
         out.radiance.push_back(vertexRadiance[v]);
-        if (layout) out.uvs.push_back(layout->uv(e, k));
+        if (layout) out.uvs.push_back(uv);
       }
       tri[k] = it->second;
     }

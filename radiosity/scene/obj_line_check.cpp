@@ -97,6 +97,7 @@ class ObjChecker {
       result_.objText += '\n';
     });
     result_.vertexCount = counts_.vertices;
+    result_.texcoordCount = counts_.texcoords;
     return std::move(result_);
   }
 
@@ -109,6 +110,7 @@ class ObjChecker {
       parseNumbers(tokens, 3, std::numeric_limits<std::size_t>::max(), path_, line);
       ++counts_.vertices;
     } else if (keyword == "vt") {
+      parseNumbers(tokens, 1, 3, path_, line);  // u [v [w]], as the OBJ specification allows
       ++counts_.texcoords;
     } else if (keyword == "vn") {
       ++counts_.normals;

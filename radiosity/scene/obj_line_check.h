@@ -21,13 +21,14 @@ struct ObjLineCheck {
   std::vector<int> faceLines;             // line of each `f`, in file order
   std::vector<int> faceSizes;             // vertex count of each `f`, in file order
   long vertexCount = 0;
+  long texcoordCount = 0;
 };
 
 // Scans `objPath` and each MTL library its `mtllib` lines name (relative to the OBJ's directory).
 // Throws InputError "file:line: message" for: a file that cannot be opened (an MTL one at the
 // `mtllib` line), malformed or non-finite numbers and too few components on `v` lines, face (and
 // line/point) indices that are not integers, zero or out of range, faces with fewer than 3
-// vertices, `usemtl` of a material no library loaded so far defines, and any MTL error that
+// vertices, `vt` lines without 1 to 3 finite numbers, `usemtl` of a material no library loaded so far defines, and any MTL error that
 // checkMtlText() reports.
 ObjLineCheck checkObjFile(const std::string& objPath);
 

@@ -121,6 +121,7 @@ bool isDegenerate(const std::vector<int>& vertices, const std::vector<Eigen::Vec
 // Polygons in file order, each mapped back to its `f` line. With triangulate = false
 // tinyobjloader keeps one face per `f`, and its shapes hold them in file order.
 std::vector<ScenePolygon> readPolygons(const std::vector<tinyobj::shape_t>& shapes,
+                                       const std::vector<tinyobj::real_t>& texcoords,
                                        const ObjLineCheck& check, int materialCount) {
   std::vector<ScenePolygon> polygons;
   polygons.reserve(check.faceLines.size());
@@ -142,6 +143,21 @@ std::vector<ScenePolygon> readPolygons(const std::vector<tinyobj::shape_t>& shap
       }
       for (int v = 0; v < size; ++v) {
         polygon.vertices.push_back(shape.mesh.indices[offset + v].vertex_index);
+      }
+      // A face has UVs when every corner names a `vt` (OBJ allows "f 1/1 2//1 3": such a face
+      // has none, and a bake into the scene's UVs reports it).
+      bool allCorners = true;
+      for (int v = 0; v < size; ++v) allCorners &= shape.mesh.indices[offset + v].texcoord_index >= 0;
+      if (allCorners) {
+        for (int v = 0; v < size; ++v) {
+          const int t = shape.mesh.indices[offset + v].texcoord_index;
+          if (2 * static_cast<std::size_t>(t) + 1 >= texcoords.size()) {
+            throw RuntimeFailure("tinyobjloader gave the face at line " +
+                                 std::to_string(polygon.sourceLine) +
+                                 " a texture coordinate out of range");
+          }
+          polygon.uvs.emplace_back(texcoords[2 * t], texcoords[2 * t + 1]);
+        }
       }
       offset += size;
       polygons.push_back(std::move(polygon));
@@ -171,6 +187,11 @@ Scene loadObjScene(const std::string& objPath) {
   Scene scene;
   scene.sourcePath = objPath;
   scene.positions = readPositions(reader.GetAttrib(), check.vertexCount);
+  if (static_cast<long>(reader.GetAttrib().texcoords.size() / 2) != check.texcoordCount) {
+    throw RuntimeFailure("tinyobjloader read " +
+                         std::to_string(reader.GetAttrib().texcoords.size() / 2) +
+                         " texture coordinates, expected " + std::to_string(check.texcoordCount));
+  }
 
   // tinyobjloader numbers materials in definition order, as the line check does; it may append
   // unnamed ones (an empty library), which nothing can refer to.
@@ -188,7 +209,8 @@ Scene loadObjScene(const std::string& objPath) {
   std::vector<int> degenerateLines, defaultLines;
   const double diagonal2 = squaredDiagonal(scene.positions);
   for (ScenePolygon& polygon :
-       readPolygons(reader.GetShapes(), check, static_cast<int>(scene.materials.size()))) {
+       readPolygons(reader.GetShapes(), reader.GetAttrib().texcoords, check,
+                    static_cast<int>(scene.materials.size()))) {
     for (int v : polygon.vertices) {
       if (v < 0 || v >= static_cast<int>(scene.positions.size())) {
         throw RuntimeFailure("tinyobjloader gave the face at line " +
@@ -222,7 +244,10 @@ Scene loadObjScene(const std::string& objPath) {
   logInfo("loaded " + objPath + ": " + std::to_string(scene.positions.size()) + " vertices, " +
           std::to_string(scene.polygons.size()) + " polygons, " +
           std::to_string(scene.materials.size()) + " materials, " +
-          std::to_string(scene.emitterCount()) + " emitting polygons");
+          std::to_string(scene.emitterCount()) + " emitting polygons" +
+          (scene.polygonsWithUvs() ? ", " + std::to_string(scene.polygonsWithUvs()) +
+                                         " with texture coordinates"
+                                   : std::string()));
   return scene;
 }
 

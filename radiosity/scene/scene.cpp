@@ -17,4 +17,10 @@ bool Scene::hasSpecular() const {
   return false;
 }
 
+int Scene::polygonsWithUvs() const {
+  int count = 0;
+  for (const ScenePolygon& polygon : polygons) count += !polygon.uvs.empty();
+  return count;
+}
+
 }  // namespace rad

@@ -13,6 +13,8 @@ struct ScenePolygon {
   std::vector<int> vertices;  // indices into Scene::positions, counter-clockwise seen from the front
   int material = 0;           // index into Scene::materials
   int sourceLine = 0;         // line of the `f` statement in the OBJ file
+  // The `vt` of each corner (u, v with v up, as OBJ writes it), or empty when some corner has none.
+  std::vector<Eigen::Vector2d> uvs;
 };
 
 // A validated scene: every polygon has >= 3 distinct, in-range vertices and non-zero area,
@@ -28,6 +30,7 @@ struct Scene {
 
   int emitterCount() const;   // polygons whose material emits
   bool hasSpecular() const;   // any polygon with a mirror or dielectric material
+  int polygonsWithUvs() const;  // polygons whose corners all have texture coordinates
 };
 
 }  // namespace rad

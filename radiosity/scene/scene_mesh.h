@@ -5,7 +5,8 @@
 
 namespace rad {
 
-// The scene's polygons as patches of a PatchMesh (one patch per polygon, same material index).
+// The scene's polygons as patches of a PatchMesh (one patch per polygon, same material index),
+// with their texture coordinates when every polygon has them.
 PatchMesh buildPatchMesh(const Scene& scene);
 
 }  // namespace rad

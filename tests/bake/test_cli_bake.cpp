@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
+#include <Eigen/Core>
+
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -104,6 +106,7 @@ TEST(CliBake, GlbHoldsGeometryLightmapUvsColoursAndTheEmbeddedPng) {
     EXPECT_EQ(uv.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
     const auto& m = model.materials[prim.material];
     EXPECT_EQ(m.emissiveTexture.index, 0);
+    EXPECT_EQ(m.emissiveTexture.texCoord, 1);  // the lightmap set
     EXPECT_EQ(m.pbrMetallicRoughness.baseColorFactor[0], 0.0);
   }
   // UVs inside [0, 1] (a texture lookup outside would clamp to another chart's edge).
@@ -173,6 +176,87 @@ TEST(CliBake, VertexColoursOnlySkipsTheLightmapAndStaysValid) {
   ASSERT_TRUE(fs::exists(dir / "scene_baked.glb"));
   validate(dir / "scene_baked.glb");
   fs::remove_all(dir);
+}
+
+// The UVs of the glb's first primitive, as (u, v) with v down (glTF).
+std::vector<Eigen::Vector2d> glbLightmapUvs(const fs::path& glb) {
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  EXPECT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, glb.string())) << err;
+  std::vector<Eigen::Vector2d> uvs;
+  if (model.meshes.empty()) return uvs;
+  const auto& acc = model.accessors[model.meshes[0].primitives[0].attributes.at("TEXCOORD_1")];
+  const auto& view = model.bufferViews[acc.bufferView];
+  const float* uv = reinterpret_cast<const float*>(model.buffers[view.buffer].data.data() +
+                                                   view.byteOffset + acc.byteOffset);
+  for (size_t i = 0; i < acc.count; ++i) uvs.emplace_back(uv[2 * i], uv[2 * i + 1]);
+  return uvs;
+}
+
+TEST(CliBake, FurnaceBakedIntoItsOwnUvsIsUniformInsideItsIslands) {
+  const fs::path dir = scratchPath("bake_scene_uvs");
+  const auto r = runRadiosity("bake " + kData + "/tests/furnace_box_uv.obj --out " +
+                              dir.string() +
+                              " --use-scene-uvs --solver gauss-seidel --tolerance 1e-8 "
+                              "--elements 300 --rays 64 --lightmap-size 64 --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  const auto summary = nlohmann::json::parse(readText(dir / "bake.json"));
+  EXPECT_EQ(summary["lightmap"]["uvs"], "scene");
+  EXPECT_EQ(summary["lightmap"]["charts"], 6);  // one island per face
+  EXPECT_EQ(summary["lightmap"]["texels_next_to_two_charts"], 0);
+  // The file's islands: face i in cell (i mod 3, i div 3) of a 3 × 2 grid, 0.05 inside it.
+  auto island = [](double u, double v) {  // v up, as in the OBJ
+    for (int i = 0; i < 6; ++i) {
+      const double x0 = (i % 3) / 3.0 + 0.05, x1 = (i % 3 + 1) / 3.0 - 0.05;
+      const double y0 = (i / 3) / 2.0 + 0.05, y1 = (i / 3 + 1) / 2.0 - 0.05;
+      if (u >= x0 - 1e-6 && u <= x1 + 1e-6 && v >= y0 - 1e-6 && v <= y1 + 1e-6) return i;
+    }
+    return -1;
+  };
+  // L = Ke / (1 − ρ) = 2 at every texel of an island (and of its dilation); texels farther than
+  // padding + 1 from every island stay black.
+  const ImageRgb image = readExr((dir / "lightmap.exr").string());
+  ASSERT_EQ(image.width, 64);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const Rgb& p = image.pixels[static_cast<size_t>(y) * 64 + x];
+      const double u = (x + 0.5) / 64, v = 1 - (y + 0.5) / 64;
+      if (island(u, v) >= 0) {
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(p[c], 2.0, 2e-5) << x << "," << y;
+      } else if (!p.isZero()) {
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(p[c], 2.0, 2e-5) << x << "," << y;
+        bool near = false;  // a dilated texel: within padding + 1 texels of an island
+        for (int dy = -3; dy <= 3; ++dy)
+          for (int dx = -3; dx <= 3; ++dx)
+            near = near || island(u + dx / 64.0, v + dy / 64.0) >= 0;
+        ASSERT_TRUE(near) << x << "," << y;
+      }
+    }
+  // The exports carry the scene's UVs: every glTF lightmap UV lies in one of the islands.
+  const auto uvs = glbLightmapUvs(dir / "scene_baked.glb");
+  ASSERT_FALSE(uvs.empty());
+  for (const auto& uv : uvs) ASSERT_GE(island(uv.x(), 1 - uv.y()), 0) << uv.transpose();
+  validate(dir / "scene_baked.glb");
+  fs::remove_all(dir);
+}
+
+TEST(CliBake, SceneUvsMustExistAndExcludeGeneratedCharts) {
+  const fs::path dir = scratchPath("bake_scene_uvs_bad");
+  auto r = runRadiosity("bake " + kData + "/tests/furnace_box.obj --out " + dir.string() +
+                        " --use-scene-uvs --elements 50 --rays 16");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("furnace_box.obj: --use-scene-uvs: the scene has no texture"),
+            std::string::npos)
+      << r.stderrText;
+  EXPECT_FALSE(fs::exists(dir));
+  r = runRadiosity("bake " + kData + "/tests/furnace_box_uv.obj --out " + dir.string() +
+                   " --use-scene-uvs --chart-angle 20");
+  EXPECT_EQ(r.exitCode, 2);
+  r = runRadiosity("bake " + kData + "/tests/furnace_box_uv.obj --out " + dir.string() +
+                   " --use-scene-uvs --no-lightmap");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_FALSE(fs::exists(dir));
 }
 
 TEST(CliBake, BadOptionsFailAndLeaveNothing) {

@@ -12,10 +12,12 @@
 #include <cstring>
 #include <string>
 
+#include "meshing/mesh_uv_layout.h"
 #include "meshing/patch_mesh.h"
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
+#include "radiosity/scene/lightmap_uv_check.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 #include "tests/fuzz/fuzz_temp_dir.h"
@@ -58,12 +60,23 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
           "a polygon with a material out of range");
     for (int v : polygon.vertices)
       check(v >= 0 && v < static_cast<int>(scene.positions.size()), "a vertex index out of range");
+    check(polygon.uvs.empty() || polygon.uvs.size() == polygon.vertices.size(),
+          "texture coordinates not one per corner");
+    for (const Eigen::Vector2d& uv : polygon.uvs) check(uv.allFinite(), "a non-finite UV");
   }
   for (const rad::Material& m : scene.materials)
     check(m.diffuse.isFinite() && m.emission.isFinite() && m.diffuse.maxComponent() < 1 &&
               m.diffuse.minComponent() >= 0 && m.emission.minComponent() >= 0,
           "a material outside its documented range");
   if (scene.polygons.empty()) return 0;
+  // The scene's UVs as lightmap UVs (bake --use-scene-uvs): refused with a message, or usable.
+  bool uvsUsable = true;
+  try {
+    rad::checkLightmapUvs(scene);
+  } catch (const rad::InputError& e) {
+    check(std::strlen(e.what()) > 0, "an InputError without a message");
+    uvsUsable = false;
+  }
 
   // Meshing as a solve does it, with a bounded element count.
   rad::PatchMesh mesh = rad::buildPatchMesh(scene);
@@ -75,5 +88,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   double sum = 0;
   for (int e = 0; e < mesh.elementCount(); ++e) sum += mesh.area(e);
   check(std::abs(sum - area) <= 1e-6 * area, "subdivision changed the total area");
+  if (mesh.hasUvs())
+    for (int e = 0; e < mesh.elementCount(); ++e)
+      for (const Eigen::Vector2d& uv : mesh.cornerUvs(e))
+        check(uv.allFinite(), "refinement made a non-finite UV");
+  if (uvsUsable) {
+    const rad::LightmapLayout layout = rad::layoutFromMeshUvs(mesh, 64, 64, 2);
+    check(static_cast<int>(layout.chartOfElement.size()) == mesh.elementCount(),
+          "a UV layout without a chart per element");
+  }
   return 0;
 }

@@ -208,6 +208,42 @@ TEST_F(ObjEdgeCases, ObjErrorsCarryTheirLine) {
   expectError("nolib.obj", "nolib.obj", 1, "'mtllib' needs a file name");
 }
 
+TEST_F(ObjEdgeCases, TextureCoordinatesArePerFaceCorner) {
+  write("m.mtl", kMaterials);
+  write("uv.obj", std::string("mtllib m.mtl\n") + kSquareVertices +
+                      "vt 0.25 0.5\nvt 0.75 0.5\nvt 0.75 1 0\nvt 0.1\n"
+                      "usemtl lamp\nf 1/1 2/2 3/3\nf 1/-1 3/3 4/1\nf 1 3 4\nf 1/1 3 4/2\n");
+  const Scene scene = loadObjScene((dir_ / "uv.obj").string());
+  ASSERT_EQ(scene.polygons.size(), 4u);
+  EXPECT_EQ(scene.polygonsWithUvs(), 2);
+  auto expectUvs = [](const std::vector<Eigen::Vector2d>& got,
+                      const std::vector<Eigen::Vector2d>& expected) {
+    ASSERT_EQ(got.size(), expected.size());
+    for (size_t i = 0; i < got.size(); ++i)  // tinyobjloader's own number parser: within rounding
+      EXPECT_LT((got[i] - expected[i]).cwiseAbs().maxCoeff(), 1e-12) << i;
+  };
+  expectUvs(scene.polygons[0].uvs, {{0.25, 0.5}, {0.75, 0.5}, {0.75, 1}});
+  // A relative index, a reused coordinate, and `vt u` alone (v defaults to 0).
+  expectUvs(scene.polygons[1].uvs, {{0.1, 0}, {0.75, 1}, {0.25, 0.5}});
+  EXPECT_TRUE(scene.polygons[2].uvs.empty());
+  EXPECT_TRUE(scene.polygons[3].uvs.empty());  // some corners only: no UVs for the face
+}
+
+TEST_F(ObjEdgeCases, MalformedTextureCoordinatesCarryTheirLine) {
+  const std::string head = std::string("mtllib m.mtl\n") + kSquareVertices;
+  write("m.mtl", kMaterials);
+  write("word.obj", head + "vt 0.5 half\n");
+  expectError("word.obj", "word.obj", 6, "malformed number 'half'");
+  write("empty.obj", head + "vt\n");
+  expectError("empty.obj", "empty.obj", 6, "'vt' needs at least 1 number");
+  write("four.obj", head + "vt 0 0 0 0\n");
+  expectError("four.obj", "four.obj", 6, "'vt' needs at most 3 numbers, found 4");
+  write("nan.obj", head + "vt nan 0\n");
+  expectError("nan.obj", "nan.obj", 6, "non-finite number 'nan'");
+  write("range.obj", head + "vt 0 0\nusemtl grey\nf 1/1 2/2 3/1\n");
+  expectError("range.obj", "range.obj", 8, "texture coordinate index 2 is out of range (1 defined");
+}
+
 TEST_F(ObjEdgeCases, MtlErrorsCarryTheirLine) {
   const std::string obj = std::string("mtllib m.mtl\n") + kSquareVertices + "f 1 2 3\n";
   write("s.obj", obj);

@@ -1,0 +1,69 @@
+// Texture coordinates through meshing: every element keeps its input polygon's UVs, and vertices
+// made by bisection take the mean of their edge's ends, so an affine UV map survives any
+// refinement exactly, on both sides of a UV seam.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <stdexcept>
+
+#include "meshing/patch_mesh.h"
+
+namespace rad {
+namespace {
+
+// Two unit squares meeting at a right angle along x (an L), sharing the edge's two vertices but
+// not its UVs: polygon 0 maps (x, y) and polygon 1 maps (x, z), each by its own affine map.
+Eigen::Vector2d uvOf(int polygon, const Eigen::Vector3d& p) {
+  if (polygon == 0) return {0.1 + 0.3 * p.x() + 0.05 * p.y(), 0.2 + 0.25 * p.y()};
+  return {0.9 - 0.2 * p.x(), 0.6 + 0.3 * p.z() - 0.1 * p.x()};
+}
+
+PatchMesh makeUvL() {
+  const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
+                                          {0, 1, 0}, {1, 0, 1}, {0, 0, 1}};
+  std::vector<PatchPolygon> polygons = {{{0, 1, 2, 3}, 0, {}}, {{1, 0, 5, 4}, 1, {}}};
+  for (int i = 0; i < 2; ++i)
+    for (int v : polygons[i].vertices) polygons[i].uvs.push_back(uvOf(i, p[v]));
+  return PatchMesh(p, polygons);
+}
+
+void expectAffineUvs(const PatchMesh& mesh) {
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const auto corners = mesh.corners(e);
+    const auto uvs = mesh.cornerUvs(e);
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector2d expected = uvOf(mesh.patch(e), corners[k]);
+      ASSERT_NEAR(uvs[k].x(), expected.x(), 1e-12) << "element " << e << " corner " << k;
+      ASSERT_NEAR(uvs[k].y(), expected.y(), 1e-12) << "element " << e << " corner " << k;
+    }
+  }
+}
+
+TEST(PatchMeshUvs, InputTrianglesKeepTheirPolygonsUvs) {
+  const PatchMesh mesh = makeUvL();
+  ASSERT_TRUE(mesh.hasUvs());
+  expectAffineUvs(mesh);
+}
+
+TEST(PatchMeshUvs, BisectionInterpolatesAcrossASeam) {
+  PatchMesh mesh = makeUvL();
+  mesh.subdivideUniform(0.01);
+  ASSERT_GT(mesh.elementCount(), 200);
+  expectAffineUvs(mesh);
+  // Local refinement at the seam: the split edge's new vertex gets a different UV on each side.
+  for (int i = 0; i < 50; ++i) mesh.bisect(i % mesh.elementCount());
+  expectAffineUvs(mesh);
+}
+
+TEST(PatchMeshUvs, MeshWithoutUvsSaysSoAndMixedInputIsRefused) {
+  const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const PatchMesh plain(p, {{{0, 1, 2}, 0, {}}, {{0, 2, 3}, 0, {}}});
+  EXPECT_FALSE(plain.hasUvs());
+  EXPECT_THROW(plain.cornerUvs(0), std::logic_error);
+  EXPECT_THROW(PatchMesh(p, {{{0, 1, 2}, 0, {{0, 0}, {1, 0}, {1, 1}}}, {{0, 2, 3}, 0, {}}}),
+               std::invalid_argument);
+  EXPECT_THROW(PatchMesh(p, {{{0, 1, 2}, 0, {{0, 0}, {1, 0}}}}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rad
