@@ -290,6 +290,12 @@ void runRender(RenderCommandOptions& o) {
       {"skipped", skipped},
   };
   if (!o.paths.empty()) report["paths"] = o.paths;
+  {
+    // The noise of render.exr: mean over pixels and channels of the variance of a pixel's mean.
+    double variance = 0;
+    for (const Rgb& v : render.variance.pixels) variance += v.sum();
+    report["mean_pixel_variance"] = variance / (3.0 * render.variance.pixels.size());
+  }
   if (o.method == "bdpt") report["mis"] = o.mis;
   if (separateBounces) {
     report["bounces_separate"] = {

@@ -19,8 +19,13 @@ double toArea(double pdfDir, const Eigen::Vector3d& from, const SurfaceHit& to) 
   return pdfDir * std::abs(to.normal.dot(d)) / (std::sqrt(d2) * d2);
 }
 
-// A delta density is stored as 0; in the ratios of the weights it cancels (every strategy that
-// does not connect at the specular vertex samples it the same way), so it counts as 1.
+// Densities along a specular chain x_a S…S x_b (x_a, x_b diffuse or on an emitter) are stored as
+// 0 and count as 1 in the ratios: no strategy connects inside the chain, so a ratio crosses it
+// whole, as p→(x_a)·p→(x_b | x_a) / (p←(x_a | x_b)·p←(x_b)). Both ends sample cosine-weighted
+// directions (Lambertian bounce, Lambertian emission), so p→(x_b | x_a) = (cos_a/π)·G/cos_a and
+// p←(x_a | x_b) = (cos_b/π)·G/cos_b are both G/π, with G the chain's generalised geometry term
+// (symmetric: étendue is conserved through mirrors and glass). They cancel exactly, leaving
+// p→(x_a)/p←(x_b); the chain's Fresnel choices have the same probability both ways.
 double remap0(double pdf) { return pdf != 0 ? pdf : 1; }
 
 }  // namespace
@@ -58,6 +63,7 @@ void Bdpt::walk(std::vector<Vertex>& path, Eigen::Vector3d origin, Eigen::Vector
     const Material& m = *hit.material;
 
     if (m.isSpecular()) {
+      v.pdfFwd = 0;  // see misWeight: a specular chain enters the weights as a whole
       const double u = m.kind == SurfaceKind::Dielectric ? rng.uniform() : 0.0;
       SpecularStep step = scatterSpecular(scene_, hit, direction, u);
       if (!step.alive) return;
@@ -87,7 +93,9 @@ void Bdpt::walk(std::vector<Vertex>& path, Eigen::Vector3d origin, Eigen::Vector
     // A cosine bounce from here back to the previous vertex (Lambertian scattering or emission
     // both are cosine-distributed, whatever the incoming direction).
     const Eigen::Vector3d back = (prev.hit.position - hit.position).normalized();
-    if (path.size() > 1 || fromLight)
+    if (prev.specular)
+      prev.pdfRev = 0;
+    else if (path.size() > 1 || fromLight)
       prev.pdfRev = toArea(std::max(0.0, hit.normal.dot(back)) / M_PI, hit.position, prev.hit);
     v.label = 'D';
     path.push_back(v);
