@@ -11,8 +11,8 @@ scene=data/cornell_box/cornell_box_mirror_glass.obj
 camera=data/cornell_box/cornell_box.camera.json  # the variant shares the box and its camera
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-echo "| method | --paths | spp | mean radiance (R,G,B) | mean pixel variance |"
-echo "| --- | --- | --- | --- | --- |"
+echo "| method | --paths | spp | mean radiance (R,G,B) | mean pixel variance | render s |"
+echo "| --- | --- | --- | --- | --- | --- |"
 for paths in "" "LS+DE"; do
   for method in path bdpt; do
     dir="$out/$method$paths"
@@ -22,8 +22,8 @@ for paths in "" "LS+DE"; do
 import json, sys
 r = json.load(open(sys.argv[1]))
 m = ", ".join("%.4f" % v for v in r["mean_radiance"])
-print("| %s | %s | %s | %s | %.3g |" % (sys.argv[2], sys.argv[3] or "(all)", sys.argv[4], m,
-                                        r["mean_pixel_variance"]))' \
+print("| %s | %s | %s | %s | %.3g | %.2f |" % (sys.argv[2], sys.argv[3] or "(all)", sys.argv[4], m,
+                                        r["mean_pixel_variance"], r["time_seconds"]["render"]))' \
       "$dir/render.json" "$method" "$paths" "$spp"
   done
 done
