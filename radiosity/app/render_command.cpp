@@ -20,6 +20,8 @@
 #include "radiosity/render/camera.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
+#include "radiosity/render/bdpt.h"
+#include "radiosity/render/path_renderer.h"
 #include "radiosity/render/path_tracer.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"
@@ -51,6 +53,9 @@ struct RenderCommandOptions {
   std::optional<double> vfov, lensRadius, focusDistance, exposure;
   std::optional<int> width, height;
   bool freshSolve = false;  // solve even when --out holds a reusable solution
+  std::string paths;           // --paths: Heckbert expression (path, bdpt)
+  std::optional<int> bouncesSeparate;  // --bounces-separate K
+  std::string mis = "power";   // --mis (bdpt)
 };
 
 Eigen::Vector3d toVector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
@@ -84,14 +89,46 @@ Camera resolveCamera(const RenderCommandOptions& o) {
 
 nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
+// Options of the path-type and Neumann-term images that cannot work together.
+void checkPathOptions(const RenderCommandOptions& o) {
+  const bool pathMethod = o.method == "path" || o.method == "bdpt";
+  if (!o.paths.empty() && !pathMethod)
+    throw InputError("--paths needs --method path or bdpt (--method " + o.method +
+                     " does not follow light paths one by one)");
+  if (o.bouncesSeparate && *o.bouncesSeparate < 0)
+    throw InputError("--bounces-separate must be >= 0 (the highest Neumann term to write)");
+  if (!o.paths.empty() && o.bouncesSeparate)
+    throw InputError("--paths and --bounces-separate cannot be combined: give one of them");
+  if (o.mis != "power" && o.mis != "balance")
+    throw InputError("unknown --mis '" + o.mis + "' (expected power or balance)");
+  if (o.mis != "power" && o.method != "bdpt") throw InputError("--mis applies to --method bdpt only");
+  if (o.bouncesSeparate && o.method == "radiosity" && o.solverName != "progressive" &&
+      o.solverName != "jacobi")
+    throw InputError("--bounces-separate with --method radiosity runs --solver jacobi (its iterates "
+                     "are the Neumann terms); --solver " + o.solverName + " cannot give them");
+  if (o.bouncesSeparate && o.solve.bounces >= 0)
+    throw InputError("--bounces-separate K sets the Jacobi bounces itself: leave out --bounces");
+}
+
 void runRender(RenderCommandOptions& o) {
   const auto start = Clock::now();
-  if (o.method != "radiosity" && o.method != "path")
-    throw InputError("unknown --method '" + o.method + "' (expected radiosity or path)");
+  if (o.method != "radiosity" && o.method != "path" && o.method != "bdpt")
+    throw InputError("unknown --method '" + o.method + "' (expected radiosity, path or bdpt)");
+  checkPathOptions(o);
+  // The path expression is parsed before any long work: a malformed one fails at once.
+  std::optional<ExpressionBinning> pathFilter;
+  if (!o.paths.empty()) pathFilter.emplace(PathExpression::parse(o.paths));
   if (o.gather < 0) throw InputError("--gather must be >= 0");
   if (o.spp < 0) throw InputError("--spp must be >= 1");
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
   const bool radiosity = o.method == "radiosity";
+  const bool separateBounces = o.bouncesSeparate.has_value();
+  if (radiosity && separateBounces) {
+    // The Neumann terms are the Jacobi iterates: B_k − B_{k−1} = (ρF)^k E.
+    o.solverName = "jacobi";
+    o.solve.bounces = *o.bouncesSeparate;
+    o.solve.keepBounceTerms = true;
+  }
   const int spp = o.spp > 0 ? o.spp : (radiosity ? 16 : 64);
   o.solve.solver = parseSolverKind(o.solverName);
   const Camera camera = resolveCamera(o);  // before any long work: a bad camera fails at once
@@ -144,17 +181,60 @@ void runRender(RenderCommandOptions& o) {
     skip("specular branch", "the scene has no mirror or glass material");
 
   std::unique_ptr<Integrator> integrator;
+  const PathIntegrator* pathIntegrator = nullptr;
   if (radiosity) {
     integrator =
         std::make_unique<FinalGather>(renderScene, solved.radiosity, FinalGatherOptions{o.gather});
     if (o.gather == 0) skip("final gather", "--gather 0: interpolated radiosity preview");
+  } else if (o.method == "bdpt") {
+    BdptOptions options;
+    options.heuristic = o.mis == "balance" ? MisHeuristic::Balance : MisHeuristic::Power;
+    auto bdpt = std::make_unique<Bdpt>(renderScene, camera, options);
+    pathIntegrator = bdpt.get();
+    integrator = std::move(bdpt);
+    if (camera.lensRadius > 0)
+      skip("light tracing (t = 1)", "it needs a pinhole camera (lens radius 0)");
   } else {
-    integrator = std::make_unique<PathTracer>(renderScene);
+    auto path = std::make_unique<PathTracer>(renderScene);
+    pathIntegrator = path.get();
+    integrator = std::move(path);
   }
   RenderSettings settings;
   settings.samplesPerPixel = spp;
   settings.seed = o.solve.seed;
-  const RenderOutput render = renderImage(camera, *integrator, settings);
+  // Path types and Neumann terms: images beside the main one (written as bounce_*.exr).
+  std::vector<ImageRgb> bounceImages;
+  RenderOutput render;
+  if (pathIntegrator) {
+    std::optional<BounceBinning> bounceBins;
+    if (separateBounces) bounceBins.emplace(*o.bouncesSeparate);
+    const PathBinning* binning = pathFilter ? static_cast<const PathBinning*>(&*pathFilter)
+                                 : bounceBins ? static_cast<const PathBinning*>(&*bounceBins)
+                                              : nullptr;
+    PathRenderOutput out = renderPathImage(camera, *pathIntegrator, settings, binning);
+    render = std::move(out.full);
+    if (pathFilter) {  // the main image holds the matching paths only
+      render.image = std::move(out.bins[0].image);
+      render.variance = std::move(out.bins[0].variance);
+    }
+    if (bounceBins)
+      for (RenderOutput& b : out.bins) bounceImages.push_back(std::move(b.image));
+  } else {
+    render = renderImage(camera, *integrator, settings);
+    if (separateBounces) {
+      // The eye pass of each term: its interpolated B_k/π at the first diffuse hit (gather 0),
+      // seen through mirrors and glass; linear in B, so the terms sum to the --gather 0 image.
+      RenderSettings quiet = settings;
+      quiet.showProgress = false;
+      for (const std::vector<Rgb>& term : solved.bounceTerms) {
+        const FinalGather eyePass(renderScene, term, FinalGatherOptions{0});
+        bounceImages.push_back(renderImage(camera, eyePass, quiet).image);
+      }
+      if (o.gather > 0)
+        skip("final gather in the bounce_* images",
+             "each Neumann term is shown by the interpolated preview (--gather 0), which they sum to");
+    }
+  }
   if (render.rays.gathersSkipped > 0)
     skip("gathers at " + std::to_string(render.rays.gathersSkipped) + " eye-ray hits",
          "the surface hit reflects nothing (ρ = 0): its radiance is its Ke");
@@ -171,6 +251,23 @@ void runRender(RenderCommandOptions& o) {
   writeExr(exr.tempPath(), render.image);
   AtomicPath png((dir / "render.png").string());
   writePng(png.tempPath(), render.image, toneMap);
+  // bounce_k: the term T^k L_e; bounce_sum_k: the terms 0..k. PNGs share the main exposure.
+  std::vector<std::unique_ptr<AtomicPath>> bounceFiles;
+  nlohmann::json bounceNames = nlohmann::json::array();
+  ImageRgb runningSum(camera.width, camera.height);
+  for (size_t k = 0; k < bounceImages.size(); ++k) {
+    for (size_t p = 0; p < runningSum.pixels.size(); ++p)
+      runningSum.pixels[p] += bounceImages[k].pixels[p];
+    for (const auto& [stem, image] : {std::pair<std::string, const ImageRgb*>{"bounce_", &bounceImages[k]},
+                                      {"bounce_sum_", &runningSum}}) {
+      const std::string name = stem + std::to_string(k);
+      bounceFiles.push_back(std::make_unique<AtomicPath>((dir / (name + ".exr")).string()));
+      writeExr(bounceFiles.back()->tempPath(), *image);
+      bounceFiles.push_back(std::make_unique<AtomicPath>((dir / (name + ".png")).string()));
+      writePng(bounceFiles.back()->tempPath(), *image, toneMap);
+      bounceNames.push_back(name);
+    }
+  }
   Rgb mean;
   for (const Rgb& p : render.image.pixels) mean += p;
   mean = mean / static_cast<double>(render.image.pixels.size());
@@ -215,6 +312,22 @@ void runRender(RenderCommandOptions& o) {
          "percentile of pixel luminance to 1 unless --exposure is given"}}},
       {"skipped", skipped},
   };
+  if (!o.paths.empty()) report["paths"] = o.paths;
+  {
+    // The noise of render.exr: mean over pixels and channels of the variance of a pixel's mean.
+    double variance = 0;
+    for (const Rgb& v : render.variance.pixels) variance += v.sum();
+    report["mean_pixel_variance"] = variance / (3.0 * render.variance.pixels.size());
+  }
+  if (o.method == "bdpt") report["mis"] = o.mis;
+  if (separateBounces) {
+    report["bounces_separate"] = {
+        {"max_bounce", *o.bouncesSeparate},
+        {"images", bounceNames},
+        {"term",
+         radiosity ? "bounce_k: (rho F)^k E of Jacobi radiosity, shown as interpolated B_k/pi"
+                   : "bounce_k: paths with exactly k scattering vertices (D or S): T^k L_e"}};
+  }
   if (radiosity)
     report["radiosity"] = {{"elements", mesh.elementCount()},
                            {"solver", solved.solverName},
@@ -237,6 +350,7 @@ void runRender(RenderCommandOptions& o) {
   for (AtomicFile* f : files) f->finish();
   exr.commit();
   png.commit();
+  for (auto& file : bounceFiles) file->commit();
   commitAll(files);
   logInfo("wrote render.exr, render.png, render.json to " + o.solve.outputDir + " (" +
           std::to_string(render.rays.total()) + " rays in " + std::to_string(render.seconds) +
@@ -253,8 +367,17 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
   cmd->add_option("--out", o->solve.outputDir, "Output directory for render.exr/.png/.json")
       ->required();
   cmd->add_option("--method", o->method,
-                  "radiosity (final gather over the solution) | path (reference path tracer)")
+                  "radiosity (final gather over the solution) | path (reference path tracer) | "
+                  "bdpt (bidirectional path tracing)")
       ->default_val("radiosity");
+  cmd->add_option("--paths", o->paths,
+                  "path and bdpt: keep only light paths matching a Heckbert expression over "
+                  "L D S E with * + ? | ( ), written light to eye (e.g. LS+DE: caustics)");
+  cmd->add_option("--bounces-separate", o->bouncesSeparate,
+                  "Also write bounce_k.exr/.png (the Neumann term T^k L_e) and bounce_sum_k "
+                  "(terms 0..k) for k = 0..K (path, bdpt; radiosity: Jacobi iterates)");
+  cmd->add_option("--mis", o->mis, "bdpt: multiple importance sampling heuristic, power | balance")
+      ->default_val(o->mis);
   cmd->add_option(
          "--gather", o->gather,
          "Final-gather rays (and shadow rays) per diffuse eye hit; 0: interpolated preview")

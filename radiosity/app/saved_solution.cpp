@@ -121,7 +121,9 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
   return f.hex();
 }
 
-bool solutionIsReusable(const SolveOptions& options) { return !(options.refineThreshold > 0); }
+bool solutionIsReusable(const SolveOptions& options) {
+  return !(options.refineThreshold > 0) && !options.keepBounceTerms;
+}
 
 std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene& scene,
                                              const SolveOptions& options, std::string& whyNot) {
@@ -129,7 +131,9 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   const std::string jsonPath = (base / kSolutionJson).string();
   const std::string csvPath = (base / kSolutionCsv).string();
   if (!solutionIsReusable(options)) {
-    whyNot = "adaptive refinement: the mesh depends on the solve";
+    whyNot = options.keepBounceTerms
+                 ? "--bounces-separate: the Jacobi terms are not saved"
+                 : "adaptive refinement: the mesh depends on the solve";
     return std::nullopt;
   }
   if (!std::filesystem::exists(jsonPath) || !std::filesystem::exists(csvPath)) {

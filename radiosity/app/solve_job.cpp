@@ -335,6 +335,9 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     Progress progress("solve (" + solver->name() + ")", 0, "iterations");
     const double startMeasure = std::max(solver->progress(), 1e-300);
     bool outOfTime = false;
+    const bool keepTerms = options.keepBounceTerms && options.solver == SolverKind::Jacobi;
+    std::vector<Rgb> previous;
+    if (keepTerms) result.bounceTerms.push_back(previous = solver->solution());  // B_0 = E
     while (solver->iterations() < maxIterations && solver->progress() > tolerance) {
       throwIfInterrupted();
       if (options.timeLimit > 0 && since(start) >= options.timeLimit) {
@@ -343,6 +346,12 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
       }
       solver->step();
       progress.advance();
+      if (keepTerms) {
+        std::vector<Rgb> term = solver->solution();
+        for (size_t e = 0; e < term.size(); ++e) term[e] -= previous[e];
+        previous = solver->solution();
+        result.bounceTerms.push_back(std::move(term));
+      }
       if (tolerance > 0 && solver->progress() > 0) {
         // Fraction of the way, on a log scale, from the starting measure to the tolerance.
         const double f = std::log(startMeasure / solver->progress()) / std::log(startMeasure / tolerance);

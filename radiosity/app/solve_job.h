@@ -32,6 +32,7 @@ struct SolveOptions {
   double tolerance = 1e-4;
   int maxIterations = 0;       // 0: a default per solver
   int bounces = -1;            // Jacobi only: exactly this many bounces (overrides tolerance)
+  bool keepBounceTerms = false;  // Jacobi only: keep each iteration's term (rho F)^k E
   FormFactorMethod formFactors = FormFactorMethod::Hemisphere;
   double patchArea = 0;        // analytic: largest shooting patch (scene units²); 0: 8 × max area
   int shadowRays = 16;         // analytic: visibility rays per receiver point and patch
@@ -59,6 +60,8 @@ struct SolveResult {
   std::unique_ptr<PatchMesh> mesh;
   RadiosityProblem problem;
   std::vector<Rgb> radiosity;  // B per element, W/m² (for scenes in metres)
+  // With keepBounceTerms: term k = B_k − B_{k−1} = (rho F)^k E of the Jacobi iterates, k ≥ 0.
+  std::vector<std::vector<Rgb>> bounceTerms;
   std::string solverName, progressMeasure;
   int iterations = 0;
   int refinementPasses = 0;

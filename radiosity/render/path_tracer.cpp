@@ -21,14 +21,9 @@ constexpr int kSpecularRouletteAfter = 8;
 PathTracer::PathTracer(const RenderScene& scene, PathTracerOptions options)
     : scene_(scene), options_(options) {}
 
-Rgb PathTracer::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
-                         RayCounts& counts) const {
-  RandomSampler sampler(rng);
-  return radiance(origin, direction, sampler, counts);
-}
-
-Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d& startDirection,
-                         Sampler& sampler, RayCounts& counts) const {
+Rgb PathTracer::trace(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d& startDirection,
+                      Sampler& sampler, RayCounts& counts, const PathBinning* binning, Rgb* binned,
+                      SplatImage* /*splats*/) const {
   const EmitterSampler& lights = scene_.emitters();
   Eigen::Vector3d origin = startOrigin, direction = startDirection;
   Rgb result, throughput = Rgb::all(1.0);
@@ -36,6 +31,15 @@ Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector
   double bsdfPdf = 0;          // solid-angle density of the last diffuse bounce
   int diffuseBounces = 0, specularRun = 0;
   bool first = true;
+  // With a binning: the eye path's vertex labels so far (eye to light) and a scratch label.
+  std::string eyeVertices, label;
+  auto add = [&](const Rgb& c, std::string_view lightSide) {
+    result += c;
+    if (!binning) return;
+    lightToEyeLabel(label, lightSide, eyeVertices);
+    const int bin = binning->binOf(label);
+    if (bin >= 0) binned[bin] += c;
+  };
 
   for (;;) {
     const SurfaceHit hit = scene_.intersect(origin, direction);
@@ -49,6 +53,7 @@ Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector
       const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
       if (!step.alive) break;
       throughput = throughput * step.weight;
+      if (binning) eyeVertices.push_back('S');
       origin = step.origin;
       direction = step.direction;
       specularBefore = true;
@@ -64,16 +69,17 @@ Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector
 
     if (m.isEmitter()) {
       if (specularBefore) {
-        result += throughput * m.emission;
+        add(throughput * m.emission, {});
       } else {
         // The light could have been sampled here by NEE too: weigh by MIS.
         const double cosY = -hit.normal.dot(direction);
         const double lightPdf = lights.pdfArea(hit.element) * hit.distance * hit.distance / cosY;
-        result += throughput * m.emission * powerHeuristic(bsdfPdf, lightPdf);
+        add(throughput * m.emission * powerHeuristic(bsdfPdf, lightPdf), {});
       }
     }
     const Rgb rho = m.diffuse;
     if (rho.maxComponent() == 0) break;
+    if (binning) eyeVertices.push_back('D');
 
     // Next-event estimation: one point on an emitter, weighed against the cosine bounce.
     const Point2 lightPoint = sampler.get2D();
@@ -88,7 +94,7 @@ Rgb PathTracer::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vector
         if (!scene_.occluded(scene_.spawn(hit, w), s.position)) {
           const double lightPdf = s.pdfArea * d2 / cosY;
           const double weight = powerHeuristic(lightPdf, cosX / M_PI);
-          result += throughput * rho * s.radiance * (cosX / M_PI / lightPdf * weight);
+          add(throughput * rho * s.radiance * (cosX / M_PI / lightPdf * weight), {});
         }
       }
     }

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "radiosity/render/integrator.h"
+#include "radiosity/render/path_integrator.h"
 
 namespace rad {
 
@@ -13,15 +13,15 @@ struct PathTracerOptions {
 // roulette on the path throughput, no clamping and no depth limit. Same scene, materials and
 // BVH as the radiosity pass: one-sided Lambertian surfaces and emitters (a back face is black),
 // mirrors reflecting Ks, dielectrics with Fresnel (Ni) and transmittance Tf.
-class PathTracer : public Integrator {
+// Each contribution's label is the eye path's vertices (D or S) ending at the emitter: L(D|S)*E.
+class PathTracer : public PathIntegrator {
  public:
   PathTracer(const RenderScene& scene, PathTracerOptions options = {});
-  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
-               RayCounts& counts) const override;
   // Each bounce's light point, direction and roulette come from `sampler`, so the first bounces
   // are stratified across the pixel's samples as the final gather's are.
-  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
-               RayCounts& counts) const override;
+  Rgb trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
+            RayCounts& counts, const PathBinning* binning, Rgb* binned,
+            SplatImage* splats) const override;  // splats unused: all contributions are the pixel's
   std::string name() const override { return "path tracing"; }
 
  private:
