@@ -1,5 +1,5 @@
-// `radiosity render SCENE.obj --out DIR`: images from the scene's camera, by final gather over the
-// radiosity solution or by the reference path tracer.
+// `radiosity render SCENE.obj --out DIR`: images from the scene's camera by one of the methods of
+// render_methods.h (final gather over the radiosity solution, path tracing, the classic ones).
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -10,6 +10,8 @@
 #include <optional>
 
 #include "radiosity/app/commands.h"
+#include "radiosity/app/render_methods.h"
+#include "radiosity/app/render_world.h"
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
@@ -17,11 +19,7 @@
 #include "radiosity/core/log.h"
 #include "radiosity/output/image_io.h"
 #include "radiosity/render/camera.h"
-#include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
-#include "radiosity/render/path_tracer.h"
-#include "radiosity/scene/obj_loader.h"
-#include "radiosity/scene/scene_mesh.h"
 
 namespace rad {
 namespace {
@@ -45,9 +43,11 @@ struct RenderCommandOptions {
 
 Eigen::Vector3d toVector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
-Camera resolveCamera(const RenderCommandOptions& o) {
+// The camera from --camera, the scene's sidecar or the command line; `source` gets the file it
+// came from ("" for none), which also holds the motion-blur fields.
+Camera resolveCamera(const RenderCommandOptions& o, std::string& source) {
   Camera camera;
-  std::string source = o.cameraFile;
+  source = o.cameraFile;
   if (source.empty()) {
     const std::string sidecar = cameraSidecarPath(o.solve.scenePath);
     if (std::filesystem::exists(sidecar)) source = sidecar;
@@ -76,15 +76,17 @@ nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z(
 
 void runRender(RenderCommandOptions& o) {
   const auto start = Clock::now();
-  if (o.method != "radiosity" && o.method != "path")
-    throw InputError("unknown --method '" + o.method + "' (expected radiosity or path)");
+  const RenderMethod& method = findRenderMethod(o.method);
   if (o.gather < 0) throw InputError("--gather must be >= 0");
   if (o.spp < 0) throw InputError("--spp must be >= 1");
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
-  const bool radiosity = o.method == "radiosity";
-  const int spp = o.spp > 0 ? o.spp : (radiosity ? 4 : 64);
+  const bool radiosity = method.needsSolve;
+  const int spp = o.spp > 0 ? o.spp : method.defaultSpp;
   o.solve.solver = parseSolverKind(o.solverName);
-  const Camera camera = resolveCamera(o);  // before any long work: a bad camera fails at once
+  std::string cameraSource;
+  // Before any long work: a bad camera or motion description fails at once.
+  const Camera camera = resolveCamera(o, cameraSource);
+  RenderWorld world(o.solve, cameraSource);
 
   const int threads = o.solve.threads > 0 ? o.solve.threads : tbb::info::default_concurrency();
   tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
@@ -95,39 +97,18 @@ void runRender(RenderCommandOptions& o) {
     skipped.push_back({{"what", what}, {"why", why}});
   };
 
-  // The scene, its mesh and (for --method radiosity) the solution.
-  SolveResult solved;
-  Scene pathScene;
-  std::unique_ptr<PatchMesh> pathMesh;
-  double solveSeconds = 0;
-  auto t = Clock::now();
-  if (radiosity) {
-    solved = runSolve(o.solve);
-    solveSeconds = since(t);
-  } else {
-    pathScene = loadObjScene(o.solve.scenePath);
-    requireEmitter(pathScene);
-    pathMesh = std::make_unique<PatchMesh>(buildPatchMesh(pathScene));
-    skip("radiosity solve", "--method path needs only the scene's triangles");
-  }
-  const Scene& scene = radiosity ? solved.scene : pathScene;
-  const PatchMesh& mesh = radiosity ? *solved.mesh : *pathMesh;
-
-  t = Clock::now();
-  const RayCaster caster(mesh);
-  const RenderScene renderScene(scene, mesh, caster);
-  const double bvhSeconds = since(t);
+  // The scene, its mesh and BVH, and (for methods that need it) the radiosity solution.
+  const RenderWorld::View view = world.viewFor(method);
+  const RenderScene& renderScene = *view.scene;
+  const PatchMesh& mesh = renderScene.mesh();
+  for (const SkipNote& s : world.skipped()) skipped.push_back({{"what", s.what}, {"why", s.why}});
   if (!renderScene.hasSpecular())
     skip("specular branch", "the scene has no mirror or glass material");
 
-  std::unique_ptr<Integrator> integrator;
-  if (radiosity) {
-    integrator =
-        std::make_unique<FinalGather>(renderScene, solved.radiosity, FinalGatherOptions{o.gather});
-    if (o.gather == 0) skip("final gather", "--gather 0: interpolated radiosity preview");
-  } else {
-    integrator = std::make_unique<PathTracer>(renderScene);
-  }
+  std::unique_ptr<Integrator> integrator =
+      method.makeIntegrator(MethodInputs{renderScene, view.radiosity, o.gather});
+  if (radiosity && o.gather == 0)
+    skip("final gather", "--gather 0: interpolated radiosity preview");
   RenderSettings settings;
   settings.samplesPerPixel = spp;
   settings.seed = o.solve.seed;
@@ -135,9 +116,10 @@ void runRender(RenderCommandOptions& o) {
   if (render.rays.gathersSkipped > 0)
     skip("gathers at " + std::to_string(render.rays.gathersSkipped) + " eye-ray hits",
          "the surface hit reflects nothing (ρ = 0): its radiance is its Ke");
+  const double solveSeconds = world.solveSeconds(), bvhSeconds = world.bvhSeconds();
 
   // Outputs: EXR (linear radiance), PNG (tone-mapped), JSON (report); renamed together at the end.
-  t = Clock::now();
+  auto t = Clock::now();
   throwIfInterrupted();
   OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
   ensureDirectory(o.solve.outputDir);
@@ -156,7 +138,8 @@ void runRender(RenderCommandOptions& o) {
 
   nlohmann::json report = {
       {"scene", o.solve.scenePath},
-      {"method", o.method},
+      {"method", method.name},
+      {"paths", method.paths},
       {"integrator", integrator->name()},
       {"camera",
        {{"position", vectorJson(camera.position)},
@@ -194,9 +177,13 @@ void runRender(RenderCommandOptions& o) {
   };
   if (radiosity)
     report["radiosity"] = {{"elements", mesh.elementCount()},
-                           {"solver", solved.solverName},
-                           {"converged", solved.converged},
-                           {"form_factor_rays", solved.raysCast}};
+                           {"solver", world.solved()->solverName},
+                           {"converged", world.solved()->converged},
+                           {"form_factor_rays", world.solved()->raysCast}};
+  if (method.usesMotion && !world.motionSpec().empty())
+    report["motion_blur"] = {
+        {"shutter", {world.motionSpec().shutterOpen, world.motionSpec().shutterClose}},
+        {"moving_objects", world.motionSpec().objects.size()}};
   AtomicFile json((dir / "render.json").string());
   json.stream() << report.dump(2) << "\n";
 
@@ -217,14 +204,12 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
       ->required();
   cmd->add_option("--out", o->solve.outputDir, "Output directory for render.exr/.png/.json")
       ->required();
-  cmd->add_option("--method", o->method,
-                  "radiosity (final gather over the solution) | path (reference path tracer)")
-      ->default_val("radiosity");
+  cmd->add_option("--method", o->method, renderMethodHelp())->default_val("radiosity");
   cmd->add_option(
          "--gather", o->gather,
          "Final-gather rays (and shadow rays) per diffuse eye hit; 0: interpolated preview")
       ->default_val(o->gather);
-  cmd->add_option("--spp", o->spp, "Samples per pixel (default: 4 radiosity, 64 path)")
+  cmd->add_option("--spp", o->spp, "Samples per pixel (default: the method's, see --method)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--camera", o->cameraFile, "Camera JSON file (default: <scene>.camera.json)");
   cmd->add_option("--position", o->position, "Camera position x y z")->expected(3);

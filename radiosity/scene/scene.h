@@ -13,6 +13,7 @@ struct ScenePolygon {
   std::vector<int> vertices;  // indices into Scene::positions, counter-clockwise seen from the front
   int material = 0;           // index into Scene::materials
   int sourceLine = 0;         // line of the `f` statement in the OBJ file
+  std::string object;         // name of the OBJ `o`/`g` group the face belongs to ("" if none)
 };
 
 // A validated scene: every polygon has >= 3 distinct, in-range vertices and non-zero area,
