@@ -87,6 +87,10 @@ void runCompare(CompareOptions& o) {
   tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
                                   static_cast<size_t>(threads));
 
+  // The motion description is checked against the scene before the first render.
+  for (const RenderMethod* method : methods)
+    if (method->usesMotion && !world.motionSpec().empty()) world.viewFor(*method);
+
   std::vector<MethodResult> results;
   for (const RenderMethod* method : methods) {
     throwIfInterrupted();

@@ -174,6 +174,13 @@ TEST(CliMotionBlur, UnknownObjectNamesTheCameraFileAndLine) {
   EXPECT_NE(r.stderrText.find(camera.string() + ":5:"), std::string::npos) << r.stderrText;
   EXPECT_NE(r.stderrText.find("'nothing'"), std::string::npos) << r.stderrText;
   EXPECT_FALSE(fs::exists(out / "render.exr"));
+  // compare checks it before its first render, whatever the order of the methods.
+  const auto c = runRadiosity("compare " + kData + "motion_blur.obj --out " + out.string() +
+                              " --methods path,distribution --camera " + camera.string());
+  EXPECT_EQ(c.exitCode, 1);
+  EXPECT_NE(c.stderrText.find(camera.string() + ":5:"), std::string::npos) << c.stderrText;
+  EXPECT_EQ(c.stderrText.find("render (path"), std::string::npos) << c.stderrText;
+  EXPECT_FALSE(fs::exists(out / "compare.png"));
   fs::remove_all(out);
   fs::remove(camera);
 }
