@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   rad::registerSolveCommand(app, run);
   rad::registerBakeCommand(app, run);
   rad::registerRenderCommand(app, run);
+  rad::registerCompareCommand(app, run);
 #ifdef RADIOSITY_HAS_VIEWER
   rad::registerViewCommand(app, run);
 #endif

@@ -1,5 +1,5 @@
-// `radiosity render SCENE.obj --out DIR`: images from the scene's camera, by final gather over the
-// radiosity solution or by the reference path tracer.
+// `radiosity render SCENE.obj --out DIR`: images from the scene's camera by one of the methods of
+// render_methods.h (final gather over the radiosity solution, path tracing, the classic ones).
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
@@ -10,6 +10,8 @@
 #include <optional>
 
 #include "radiosity/app/commands.h"
+#include "radiosity/app/render_methods.h"
+#include "radiosity/app/render_world.h"
 #include "radiosity/app/saved_solution.h"
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
@@ -20,11 +22,8 @@
 #include "radiosity/render/camera.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
-#include "radiosity/render/bdpt.h"
+#include "radiosity/render/path_expression.h"
 #include "radiosity/render/path_renderer.h"
-#include "radiosity/render/path_tracer.h"
-#include "radiosity/scene/obj_loader.h"
-#include "radiosity/scene/scene_mesh.h"
 
 namespace rad {
 namespace {
@@ -34,35 +33,29 @@ double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// Render's solve defaults (`solve` uses 1500 elements and 1024 rays), measured on the Cornell box
-// by bench/render_error_vs_time.py --solve-sizes (README, "Images").
-constexpr int kRenderElements = 500;
-constexpr int kRenderRaysPerElement = 256;
-
 struct RenderCommandOptions {
   SolveOptions solve;
   std::string solverName = "progressive";
   std::string method = "radiosity";
-  // One shadow and one gather ray per pixel sample: the sampler stratifies them across the
-  // pixel's samples, so 16 samples give 16 of each per pixel, and the camera rays that resolve
-  // edges come at a third of the cost of gather 4 (bench/render_error_vs_time.py).
-  int gather = 1;
+  int gather = kRenderGather;
   int spp = 0;  // 0: the method's default
   std::string cameraFile;
   std::vector<double> position, lookAt, up;
   std::optional<double> vfov, lensRadius, focusDistance, exposure;
   std::optional<int> width, height;
-  bool freshSolve = false;  // solve even when --out holds a reusable solution
-  std::string paths;           // --paths: Heckbert expression (path, bdpt)
+  bool freshSolve = false;             // solve even when --out holds a reusable solution
+  std::string paths;                   // --paths: Heckbert expression (path, bdpt)
   std::optional<int> bouncesSeparate;  // --bounces-separate K
-  std::string mis = "power";   // --mis (bdpt)
+  std::string mis = "power";           // --mis (bdpt)
 };
 
 Eigen::Vector3d toVector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
-Camera resolveCamera(const RenderCommandOptions& o) {
+// The camera from --camera, the scene's sidecar or the command line; `source` gets the file it
+// came from ("" for none), which also holds the motion-blur fields.
+Camera resolveCamera(const RenderCommandOptions& o, std::string& source) {
   Camera camera;
-  std::string source = o.cameraFile;
+  source = o.cameraFile;
   if (source.empty()) {
     const std::string sidecar = cameraSidecarPath(o.solve.scenePath);
     if (std::filesystem::exists(sidecar)) source = sidecar;
@@ -95,6 +88,9 @@ void checkPathOptions(const RenderCommandOptions& o) {
   if (!o.paths.empty() && !pathMethod)
     throw InputError("--paths needs --method path or bdpt (--method " + o.method +
                      " does not follow light paths one by one)");
+  if (o.bouncesSeparate && !pathMethod && o.method != "radiosity")
+    throw InputError("--bounces-separate needs --method path, bdpt or radiosity (--method " +
+                     o.method + " does not sum a Neumann series)");
   if (o.bouncesSeparate && *o.bouncesSeparate < 0)
     throw InputError("--bounces-separate must be >= 0 (the highest Neumann term to write)");
   if (!o.paths.empty() && o.bouncesSeparate)
@@ -112,8 +108,7 @@ void checkPathOptions(const RenderCommandOptions& o) {
 
 void runRender(RenderCommandOptions& o) {
   const auto start = Clock::now();
-  if (o.method != "radiosity" && o.method != "path" && o.method != "bdpt")
-    throw InputError("unknown --method '" + o.method + "' (expected radiosity, path or bdpt)");
+  const RenderMethod& method = findRenderMethod(o.method);
   checkPathOptions(o);
   // The path expression is parsed before any long work: a malformed one fails at once.
   std::optional<ExpressionBinning> pathFilter;
@@ -121,7 +116,7 @@ void runRender(RenderCommandOptions& o) {
   if (o.gather < 0) throw InputError("--gather must be >= 0");
   if (o.spp < 0) throw InputError("--spp must be >= 1");
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
-  const bool radiosity = o.method == "radiosity";
+  const bool radiosity = method.needsSolve;
   const bool separateBounces = o.bouncesSeparate.has_value();
   if (radiosity && separateBounces) {
     // The Neumann terms are the Jacobi iterates: B_k − B_{k−1} = (ρF)^k E.
@@ -129,9 +124,12 @@ void runRender(RenderCommandOptions& o) {
     o.solve.bounces = *o.bouncesSeparate;
     o.solve.keepBounceTerms = true;
   }
-  const int spp = o.spp > 0 ? o.spp : (radiosity ? 16 : 64);
+  const int spp = o.spp > 0 ? o.spp : method.defaultSpp;
   o.solve.solver = parseSolverKind(o.solverName);
-  const Camera camera = resolveCamera(o);  // before any long work: a bad camera fails at once
+  std::string cameraSource;
+  // Before any long work: a bad camera or motion description fails at once.
+  const Camera camera = resolveCamera(o, cameraSource);
+  RenderWorld world(o.solve, cameraSource, !o.freshSolve);
 
   const int threads = o.solve.threads > 0 ? o.solve.threads : tbb::info::default_concurrency();
   tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
@@ -142,70 +140,29 @@ void runRender(RenderCommandOptions& o) {
     skipped.push_back({{"what", what}, {"why", why}});
   };
 
-  // The scene, its mesh and (for --method radiosity) the solution.
-  SolveResult solved;
-  Scene pathScene;
-  std::unique_ptr<PatchMesh> pathMesh;
-  double solveSeconds = 0;
-  bool reusedSolution = false;
-  auto t = Clock::now();
-  if (radiosity) {
-    Scene scene = loadObjScene(o.solve.scenePath);
-    requireEmitter(scene);
-    std::string whyNot = "--fresh-solve";
-    std::optional<SolveResult> saved;
-    if (!o.freshSolve) saved = loadSavedSolution(o.solve.outputDir, scene, o.solve, whyNot);
-    if (saved) {
-      solved = std::move(*saved);
-      reusedSolution = true;
-      skip("radiosity solve", "reused the solution saved in " + o.solve.outputDir);
-    } else {
-      logInfo("solving (" + whyNot + ")");
-      solved = solveScene(std::move(scene), o.solve);
-    }
-    solveSeconds = since(t);
-  } else {
-    pathScene = loadObjScene(o.solve.scenePath);
-    requireEmitter(pathScene);
-    pathMesh = std::make_unique<PatchMesh>(buildPatchMesh(pathScene));
-    skip("radiosity solve", "--method path needs only the scene's triangles");
-  }
-  const Scene& scene = radiosity ? solved.scene : pathScene;
-  const PatchMesh& mesh = radiosity ? *solved.mesh : *pathMesh;
-
-  t = Clock::now();
-  const RayCaster caster(mesh);
-  const RenderScene renderScene(scene, mesh, caster);
-  const double bvhSeconds = since(t);
+  // The scene, its mesh and BVH, and (for methods that need it) the radiosity solution.
+  const RenderWorld::View view = world.viewFor(method);
+  const RenderScene& renderScene = *view.scene;
+  const PatchMesh& mesh = renderScene.mesh();
+  for (const SkipNote& s : world.skipped()) skipped.push_back({{"what", s.what}, {"why", s.why}});
   if (!renderScene.hasSpecular())
     skip("specular branch", "the scene has no mirror or glass material");
 
-  std::unique_ptr<Integrator> integrator;
-  const PathIntegrator* pathIntegrator = nullptr;
-  if (radiosity) {
-    integrator =
-        std::make_unique<FinalGather>(renderScene, solved.radiosity, FinalGatherOptions{o.gather});
-    if (o.gather == 0) skip("final gather", "--gather 0: interpolated radiosity preview");
-  } else if (o.method == "bdpt") {
-    BdptOptions options;
-    options.heuristic = o.mis == "balance" ? MisHeuristic::Balance : MisHeuristic::Power;
-    auto bdpt = std::make_unique<Bdpt>(renderScene, camera, options);
-    pathIntegrator = bdpt.get();
-    integrator = std::move(bdpt);
-    if (camera.lensRadius > 0)
-      skip("light tracing (t = 1)", "it needs a pinhole camera (lens radius 0)");
-  } else {
-    auto path = std::make_unique<PathTracer>(renderScene);
-    pathIntegrator = path.get();
-    integrator = std::move(path);
-  }
+  std::unique_ptr<Integrator> integrator = method.makeIntegrator(
+      MethodInputs{renderScene, view.radiosity, o.gather, &camera,
+                   o.mis == "balance" ? MisHeuristic::Balance : MisHeuristic::Power});
+  if (radiosity && o.gather == 0)
+    skip("final gather", "--gather 0: interpolated radiosity preview");
+  if (o.method == "bdpt" && camera.lensRadius > 0)
+    skip("light tracing (t = 1)", "it needs a pinhole camera (lens radius 0)");
   RenderSettings settings;
   settings.samplesPerPixel = spp;
   settings.seed = o.solve.seed;
   // Path types and Neumann terms: images beside the main one (written as bounce_*.exr).
   std::vector<ImageRgb> bounceImages;
   RenderOutput render;
-  if (pathIntegrator) {
+  const auto* pathIntegrator = dynamic_cast<const PathIntegrator*>(integrator.get());
+  if (pathIntegrator && (pathFilter || separateBounces)) {
     std::optional<BounceBinning> bounceBins;
     if (separateBounces) bounceBins.emplace(*o.bouncesSeparate);
     const PathBinning* binning = pathFilter ? static_cast<const PathBinning*>(&*pathFilter)
@@ -220,13 +177,13 @@ void runRender(RenderCommandOptions& o) {
     if (bounceBins)
       for (RenderOutput& b : out.bins) bounceImages.push_back(std::move(b.image));
   } else {
-    render = renderImage(camera, *integrator, settings);
-    if (separateBounces) {
+    render = renderMethodImage(camera, *integrator, settings);
+    if (separateBounces && radiosity) {
       // The eye pass of each term: its interpolated B_k/π at the first diffuse hit (gather 0),
       // seen through mirrors and glass; linear in B, so the terms sum to the --gather 0 image.
       RenderSettings quiet = settings;
       quiet.showProgress = false;
-      for (const std::vector<Rgb>& term : solved.bounceTerms) {
+      for (const std::vector<Rgb>& term : world.solved()->bounceTerms) {
         const FinalGather eyePass(renderScene, term, FinalGatherOptions{0});
         bounceImages.push_back(renderImage(camera, eyePass, quiet).image);
       }
@@ -238,9 +195,10 @@ void runRender(RenderCommandOptions& o) {
   if (render.rays.gathersSkipped > 0)
     skip("gathers at " + std::to_string(render.rays.gathersSkipped) + " eye-ray hits",
          "the surface hit reflects nothing (ρ = 0): its radiance is its Ke");
+  const double solveSeconds = world.solveSeconds(), bvhSeconds = world.bvhSeconds();
 
   // Outputs: EXR (linear radiance), PNG (tone-mapped), JSON (report); renamed together at the end.
-  t = Clock::now();
+  auto t = Clock::now();
   throwIfInterrupted();
   OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
   ensureDirectory(o.solve.outputDir);
@@ -276,7 +234,9 @@ void runRender(RenderCommandOptions& o) {
 
   nlohmann::json report = {
       {"scene", o.solve.scenePath},
-      {"method", o.method},
+      {"method", method.name},
+      // The light paths this image holds: the method's, or those --paths kept.
+      {"paths", o.paths.empty() ? method.paths : o.paths},
       {"integrator", integrator->name()},
       {"camera",
        {{"position", vectorJson(camera.position)},
@@ -312,7 +272,6 @@ void runRender(RenderCommandOptions& o) {
          "percentile of pixel luminance to 1 unless --exposure is given"}}},
       {"skipped", skipped},
   };
-  if (!o.paths.empty()) report["paths"] = o.paths;
   {
     // The noise of render.exr: mean over pixels and channels of the variance of a pixel's mean.
     double variance = 0;
@@ -330,20 +289,24 @@ void runRender(RenderCommandOptions& o) {
   }
   if (radiosity)
     report["radiosity"] = {{"elements", mesh.elementCount()},
-                           {"solver", solved.solverName},
-                           {"converged", solved.converged},
-                           {"reused_saved_solution", reusedSolution},
-                           {"form_factor_rays", solved.raysCast}};
+                           {"solver", world.solved()->solverName},
+                           {"converged", world.solved()->converged},
+                           {"reused_saved_solution", world.reusedSolution()},
+                           {"form_factor_rays", world.solved()->raysCast}};
+  if (method.usesMotion && !world.motionSpec().empty())
+    report["motion_blur"] = {
+        {"shutter", {world.motionSpec().shutterOpen, world.motionSpec().shutterClose}},
+        {"moving_objects", world.motionSpec().objects.size()}};
   AtomicFile json((dir / "render.json").string());
   json.stream() << report.dump(2) << "\n";
 
   // The solution, for the next render into this directory (not when it was reused from here).
   std::vector<AtomicFile*> files = {&json};
   std::unique_ptr<AtomicFile> solutionCsv, solutionJson;
-  if (radiosity && !reusedSolution && solutionIsReusable(o.solve)) {
+  if (radiosity && !world.reusedSolution() && solutionIsReusable(o.solve)) {
     solutionCsv = std::make_unique<AtomicFile>((dir / kSolutionCsv).string());
     solutionJson = std::make_unique<AtomicFile>((dir / kSolutionJson).string());
-    writeSavedSolution(*solutionCsv, *solutionJson, solved, o.solve);
+    writeSavedSolution(*solutionCsv, *solutionJson, *world.solved(), o.solve);
     files.push_back(solutionCsv.get());
     files.push_back(solutionJson.get());
   }
@@ -366,10 +329,7 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
       ->required();
   cmd->add_option("--out", o->solve.outputDir, "Output directory for render.exr/.png/.json")
       ->required();
-  cmd->add_option("--method", o->method,
-                  "radiosity (final gather over the solution) | path (reference path tracer) | "
-                  "bdpt (bidirectional path tracing)")
-      ->default_val("radiosity");
+  cmd->add_option("--method", o->method, renderMethodHelp())->default_val("radiosity");
   cmd->add_option("--paths", o->paths,
                   "path and bdpt: keep only light paths matching a Heckbert expression over "
                   "L D S E with * + ? | ( ), written light to eye (e.g. LS+DE: caustics)");
@@ -382,7 +342,7 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
          "--gather", o->gather,
          "Final-gather rays (and shadow rays) per diffuse eye hit; 0: interpolated preview")
       ->default_val(o->gather);
-  cmd->add_option("--spp", o->spp, "Samples per pixel (default: 16 radiosity, 64 path)")
+  cmd->add_option("--spp", o->spp, "Samples per pixel (default: the method's, see --method)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--camera", o->cameraFile, "Camera JSON file (default: <scene>.camera.json)");
   cmd->add_option("--position", o->position, "Camera position x y z")->expected(3);
@@ -398,8 +358,6 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
   cmd->add_flag("--fresh-solve", o->freshSolve,
                "Solve even when --out holds a solution saved by an earlier render of the same "
                "scene and solve options (otherwise it is reused)");
-  // The final gather reads the solution only at secondary hits and averages it over the
-  // hemisphere, so a coarser, cheaper solve than `solve`'s default serves an image as well.
   o->solve.targetElements = kRenderElements;
   o->solve.raysPerElement = kRenderRaysPerElement;
   addSolveOptions(*cmd, o->solve, o->solverName);

@@ -86,9 +86,10 @@ Camera loadCamera(const std::string& path) {
     throw InputError(path, 0, "unreadable JSON: " + std::string(e.what()));
   }
   if (!j.is_object()) throw InputError(path, 1, "a camera file holds one JSON object");
-  static const char* known[] = {"position",     "look_at",        "up",
-                                "vfov_degrees", "width",          "height",
-                                "lens_radius",  "focus_distance", "comment"};
+  static const char* known[] = {"position", "look_at", "up", "vfov_degrees", "width", "height",
+                                "lens_radius", "focus_distance", "comment",
+                                // motion blur for --method distribution: read by loadMotionSpec
+                                "shutter", "motion"};
   for (const auto& item : j.items()) {
     bool ok = false;
     for (const char* k : known) ok = ok || item.key() == k;

@@ -27,7 +27,8 @@ void validateCamera(const Camera& camera, const std::string& source);
 std::string cameraSidecarPath(const std::string& scenePath);
 
 // Reads a camera JSON file: {"position": [x,y,z], "look_at": [x,y,z], "up": [x,y,z],
-// "vfov_degrees": f, "width": w, "height": h, "lens_radius": r?, "focus_distance": d?}.
+// "vfov_degrees": f, "width": w, "height": h, "lens_radius": r?, "focus_distance": d?}; the keys
+// "shutter" and "motion" (motion blur) are allowed and read by loadMotionSpec (scene_motion.h).
 // Throws InputError naming the file (and line, for syntax errors) on bad content.
 Camera loadCamera(const std::string& path);
 

@@ -1,9 +1,12 @@
 #include "radiosity/render/render_scene.h"
 
+#include <limits>
+
 namespace rad {
 
-RenderScene::RenderScene(const Scene& scene, const PatchMesh& mesh, const RayCaster& caster)
-    : scene_(scene), mesh_(mesh), caster_(caster), emitters_(scene, mesh) {
+RenderScene::RenderScene(const Scene& scene, const PatchMesh& mesh, const RayCaster& caster,
+                         const SceneMotion* motion)
+    : scene_(scene), mesh_(mesh), caster_(caster), motion_(motion), emitters_(scene, mesh) {
   const int n = mesh.elementCount();
   corners_.resize(n);
   normals_.resize(n);
@@ -14,9 +17,10 @@ RenderScene::RenderScene(const Scene& scene, const PatchMesh& mesh, const RayCas
   }
 }
 
-SurfaceHit RenderScene::intersect(const Eigen::Vector3d& origin,
-                                  const Eigen::Vector3d& direction) const {
-  const RayHit h = caster_.closestHit(origin, direction);
+SurfaceHit RenderScene::intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                                  double time) const {
+  const RayHit h =
+      caster_.closestHit(origin, direction, std::numeric_limits<double>::infinity(), time);
   SurfaceHit hit;
   if (!h.hit()) return hit;
   hit.element = h.element;
@@ -26,6 +30,7 @@ SurfaceHit RenderScene::intersect(const Eigen::Vector3d& origin,
   // float error of origin + t·direction.
   const auto& c = corners_[h.element];
   hit.position = (1 - h.u - h.v) * c[0] + h.u * c[1] + h.v * c[2];
+  if (motion_) hit.position += motion_->displacement(h.element, time);  // translation only
   hit.distance = (hit.position - origin).norm();
   hit.normal = normals_[h.element];
   hit.front = hit.normal.dot(direction) < 0;
@@ -33,12 +38,13 @@ SurfaceHit RenderScene::intersect(const Eigen::Vector3d& origin,
   return hit;
 }
 
-bool RenderScene::occluded(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const {
+bool RenderScene::occluded(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                           double time) const {
   Eigen::Vector3d d = to - from;
   const double length = d.norm();
   if (!(length > 2 * caster_.surfaceOffset())) return false;
   d /= length;
-  return caster_.occluded(from, d, length - 2 * caster_.surfaceOffset());
+  return caster_.occluded(from, d, length - 2 * caster_.surfaceOffset(), time);
 }
 
 }  // namespace rad

@@ -7,6 +7,7 @@
 #include "meshing/patch_mesh.h"
 #include "radiosity/core/rgb.h"
 #include "radiosity/render/emitter_sampler.h"
+#include "radiosity/render/scene_motion.h"
 #include "radiosity/scene/scene.h"
 #include "radiosity/visibility/ray_caster.h"
 
@@ -41,12 +42,16 @@ struct SurfaceHit {
 // the emitters to sample. Holds references; the scene, mesh and caster must outlive it.
 class RenderScene {
  public:
-  RenderScene(const Scene& scene, const PatchMesh& mesh, const RayCaster& caster);
+  // `motion` (optional, for motion blur): the moving elements; the caster must have been built
+  // with motion->vertices. Queries then take a shutter time in [0, 1].
+  RenderScene(const Scene& scene, const PatchMesh& mesh, const RayCaster& caster,
+              const SceneMotion* motion = nullptr);
 
-  SurfaceHit intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) const;
+  SurfaceHit intersect(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                       double time = 0) const;
   // True when the segment from `from` (already lifted off its surface) to `to` (a point on a
   // surface) is blocked. Stops short of `to` by the caster's surface offset.
-  bool occluded(const Eigen::Vector3d& from, const Eigen::Vector3d& to) const;
+  bool occluded(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double time = 0) const;
   // A ray origin on `hit` lifted off the surface to the side `direction` leaves towards.
   Eigen::Vector3d spawn(const SurfaceHit& hit, const Eigen::Vector3d& direction) const {
     return caster_.liftOff(hit.position, hit.normal, direction);
@@ -57,11 +62,13 @@ class RenderScene {
   const Material& material(int element) const { return scene_.materials[mesh_.material(element)]; }
   const EmitterSampler& emitters() const { return emitters_; }
   bool hasSpecular() const { return hasSpecular_; }
+  bool hasMotion() const { return motion_ != nullptr; }
 
  private:
   const Scene& scene_;
   const PatchMesh& mesh_;
   const RayCaster& caster_;
+  const SceneMotion* motion_;
   EmitterSampler emitters_;
   std::vector<std::array<Eigen::Vector3d, 3>> corners_;
   std::vector<Eigen::Vector3d> normals_;

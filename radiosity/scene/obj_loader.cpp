@@ -136,6 +136,7 @@ std::vector<ScenePolygon> readPolygons(const std::vector<tinyobj::shape_t>& shap
       }
       ScenePolygon polygon;
       polygon.sourceLine = check.faceLines[k];
+      polygon.object = shape.name;  // the last `o` or `g` name before the face
       polygon.material = shape.mesh.material_ids[f];
       if (polygon.material >= materialCount) {
         throw RuntimeFailure("tinyobjloader gave the face at line " +

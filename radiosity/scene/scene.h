@@ -15,6 +15,7 @@ struct ScenePolygon {
   int sourceLine = 0;         // line of the `f` statement in the OBJ file
   // The `vt` of each corner (u, v with v up, as OBJ writes it), or empty when some corner has none.
   std::vector<Eigen::Vector2d> uvs;
+  std::string object;         // name of the OBJ `o`/`g` group the face belongs to ("" if none)
 };
 
 // A validated scene: every polygon has >= 3 distinct, in-range vertices and non-zero area,

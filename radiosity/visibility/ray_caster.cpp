@@ -1,5 +1,6 @@
 #include "radiosity/visibility/ray_caster.h"
 
+#include <stdexcept>
 #include <string>
 
 #include "radiosity/core/errors.h"
@@ -18,16 +19,19 @@ void onEmbreeError(void*, RTCError code, const char* message) {
 
 }  // namespace
 
-RayCaster::RayCaster(const PatchMesh& mesh) {
+RayCaster::RayCaster(const PatchMesh& mesh, const VertexMotion* motion) {
   try {
-    build(mesh);
+    build(mesh, motion);
   } catch (...) {
     release();  // the destructor does not run for a constructor that throws
     throw;
   }
 }
 
-void RayCaster::build(const PatchMesh& mesh) {
+void RayCaster::build(const PatchMesh& mesh, const VertexMotion* motion) {
+  if (motion && (static_cast<int>(motion->open.size()) != mesh.vertexCount() ||
+                 static_cast<int>(motion->close.size()) != mesh.vertexCount()))
+    throw std::invalid_argument("VertexMotion needs one displacement per mesh vertex");
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw RuntimeFailure("cannot create the Embree device");
   rtcSetDeviceErrorFunction(device_, onEmbreeError, nullptr);
@@ -44,20 +48,28 @@ void RayCaster::build(const PatchMesh& mesh) {
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   const TriMesh& m = mesh.mesh();
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.n_vertices()));
+  const unsigned steps = motion ? 2 : 1;
+  if (motion) rtcSetGeometryTimeStepCount(geometry, steps);
   auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), m.n_faces()));
-  if (!vertices || !indices) {
+  bool allocated = indices != nullptr;
+  for (unsigned step = 0; step < steps && allocated; ++step) {
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, step, RTC_FORMAT_FLOAT3,
+                                3 * sizeof(float), m.n_vertices()));
+    allocated = vertices != nullptr;
+    for (int v = 0; allocated && v < mesh.vertexCount(); ++v) {
+      Eigen::Vector3d p = mesh.position(v) - centre_;
+      if (motion) p += step == 0 ? motion->open[v] : motion->close[v];
+      vertices[3 * v + 0] = static_cast<float>(p.x());
+      vertices[3 * v + 1] = static_cast<float>(p.y());
+      vertices[3 * v + 2] = static_cast<float>(p.z());
+    }
+  }
+  if (!allocated) {
     rtcReleaseGeometry(geometry);
     check("allocating geometry buffers");
     throw RuntimeFailure("allocating geometry buffers failed");
-  }
-  for (int v = 0; v < mesh.vertexCount(); ++v) {
-    const Eigen::Vector3d p = mesh.position(v) - centre_;
-    vertices[3 * v + 0] = static_cast<float>(p.x());
-    vertices[3 * v + 1] = static_cast<float>(p.y());
-    vertices[3 * v + 2] = static_cast<float>(p.z());
   }
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const auto c = mesh.cornerVertices(e);
@@ -88,7 +100,8 @@ void RayCaster::check(const char* what) const {
 }
 
 namespace {
-void fillRay(RTCRay& ray, const Eigen::Vector3d& o, const Eigen::Vector3d& d, double maxDistance) {
+void fillRay(RTCRay& ray, const Eigen::Vector3d& o, const Eigen::Vector3d& d, double maxDistance,
+             double time) {
   ray.org_x = static_cast<float>(o.x());
   ray.org_y = static_cast<float>(o.y());
   ray.org_z = static_cast<float>(o.z());
@@ -97,7 +110,7 @@ void fillRay(RTCRay& ray, const Eigen::Vector3d& o, const Eigen::Vector3d& d, do
   ray.dir_z = static_cast<float>(d.z());
   ray.tnear = 0.0f;
   ray.tfar = maxDistance < 3e38 ? static_cast<float>(maxDistance) : std::numeric_limits<float>::infinity();
-  ray.time = 0.0f;
+  ray.time = static_cast<float>(time);
   ray.mask = 0xFFFFFFFFu;
   ray.id = 0;
   ray.flags = 0;
@@ -105,11 +118,11 @@ void fillRay(RTCRay& ray, const Eigen::Vector3d& o, const Eigen::Vector3d& d, do
 }  // namespace
 
 RayHit RayCaster::closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                             double maxDistance) const {
+                             double maxDistance, double time) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit;
-  fillRay(rayHit.ray, origin - centre_, direction, maxDistance);
+  fillRay(rayHit.ray, origin - centre_, direction, maxDistance, time);
   rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -125,11 +138,11 @@ RayHit RayCaster::closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3
 }
 
 bool RayCaster::occluded(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                         double maxDistance) const {
+                         double maxDistance, double time) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay ray;
-  fillRay(ray, origin - centre_, direction, maxDistance);
+  fillRay(ray, origin - centre_, direction, maxDistance, time);
   rtcOccluded1(scene_, &context, &ray);
   return ray.tfar < 0.0f;  // Embree sets tfar to -inf when the ray is blocked
 }

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <limits>
+#include <vector>
 
 #include "meshing/patch_mesh.h"
 
@@ -18,26 +19,36 @@ struct RayHit {
   bool hit() const { return element >= 0; }
 };
 
+// Linear motion of the vertices over a shutter interval (motion blur): vertex v sits at
+// position(v) + open[v] at shutter time 0 and at position(v) + close[v] at time 1. Embree
+// interpolates linearly between the two time steps, which is exact for a translation.
+struct VertexMotion {
+  std::vector<Eigen::Vector3d> open, close;  // one per PatchMesh vertex
+};
+
 // Owns the Embree device and a BVH over the PatchMesh's elements (primitive i = element i).
 // The geometry is re-centred on its bounding box before conversion to float, so precision does
 // not depend on where the scene sits in space; callers work in the scene's own coordinates.
 // Thread-safe for queries once constructed. Embree errors become RuntimeFailure exceptions.
 class RayCaster {
  public:
-  explicit RayCaster(const PatchMesh& mesh);
+  // With `motion`, the BVH holds two time steps and queries take a shutter time in [0, 1].
+  explicit RayCaster(const PatchMesh& mesh, const VertexMotion* motion = nullptr);
   ~RayCaster();
   RayCaster(const RayCaster&) = delete;
   RayCaster& operator=(const RayCaster&) = delete;
 
   // Closest element hit along origin + t·direction for t in [0, maxDistance] (lift the origin
   // off its surface first, see liftOff). `direction` need not
-  // be normalised; distances are in units of |direction|.
+  // be normalised; distances are in units of |direction|. `time` in [0, 1] picks the moment of
+  // the shutter interval for moving geometry (ignored without motion).
   RayHit closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                    double maxDistance = std::numeric_limits<double>::infinity()) const;
+                    double maxDistance = std::numeric_limits<double>::infinity(),
+                    double time = 0) const;
   // True when anything blocks origin + t·direction for t in [0, maxDistance]: pass a maxDistance
   // slightly short of the target so the target itself does not count.
-  bool occluded(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                double maxDistance) const;
+  bool occluded(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double maxDistance,
+                double time = 0) const;
 
   // Offset that lifts a ray origin off a surface: a small fraction of the scene's size, never a
   // fixed constant, so scenes in millimetres and in kilometres behave alike.
@@ -50,7 +61,7 @@ class RayCaster {
 
  private:
   void check(const char* what) const;
-  void build(const PatchMesh& mesh);
+  void build(const PatchMesh& mesh, const VertexMotion* motion);
   void release();
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;

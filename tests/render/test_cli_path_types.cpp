@@ -37,7 +37,7 @@ TEST(CliPathTypes, BadOptionsAreClearErrors) {
   expectError("--method path --paths LDE --bounces-separate 2", "cannot be combined");
   expectError("--method bdpt --mis cubic", "unknown --mis 'cubic'");
   expectError("--method path --mis balance", "--mis applies to --method bdpt only");
-  expectError("--method bidirectional", "expected radiosity, path or bdpt");
+  expectError("--method bidirectional", "unknown --method 'bidirectional'");
   expectError("--method radiosity --bounces-separate 2 --solver gauss-seidel",
               "runs --solver jacobi");
 }

@@ -83,7 +83,7 @@ TEST(CliRenderErrors, NoCameraAndBadOptionsAreErrors) {
                         "/tests/furnace_box.obj --out " + out.string());
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.stderrText.find("no camera"), std::string::npos) << r.stderrText;
-  r = runRadiosity("render " + kMirrorRoom + " --out " + out.string() + " --method whitted");
+  r = runRadiosity("render " + kMirrorRoom + " --out " + out.string() + " --method raytrace");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.stderrText.find("--method"), std::string::npos) << r.stderrText;
   r = runRadiosity("render " + kMirrorRoom + " --out " + out.string() + " --spp 0");

@@ -4,7 +4,8 @@
 // and direction come from the plane analytically, and the same integrator is asked for the
 // radiance along the mirrored ray from that point. A mirror bounce draws no random numbers, so
 // for the radiosity passes both estimates from the same random stream follow the same path and
-// agree to rounding; the path tracer is compared in the mean, within 4σ.
+// agree to rounding (so does Whitted's deterministic tracer); the path tracer is compared in the
+// mean, within 4σ.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "radiosity/render/camera.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/path_tracer.h"
+#include "radiosity/render/whitted_ray_tracer.h"
 #include "tests/render/render_fixture.h"
 
 namespace rad {
@@ -110,6 +112,12 @@ TEST_F(MirrorRoom, FinalGatherInTheMirror) {
 TEST_F(MirrorRoom, PathTracerInTheMirror) {
   expectMirrorShowsReflectedRadiance(PathTracer(*scene_->view), scene_->caster->surfaceOffset(),
                                      "path", 64);
+}
+
+// Whitted's tracer is deterministic: the mirrored view agrees to rounding.
+TEST_F(MirrorRoom, WhittedInTheMirror) {
+  expectMirrorShowsReflectedRadiance(WhittedRayTracer(*scene_->view),
+                                     scene_->caster->surfaceOffset(), "whitted");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -62,6 +63,16 @@ class ChildProcess {
     return !waited_;
   }
   int status() const { return status_; }
+  // Whether the process has installed a handler for `sig` yet (Linux: the SigCgt mask of
+  // /proc/<pid>/status). On a loaded machine start-up alone can take longer than a test's delay.
+  bool catches(int sig) const {
+    std::ifstream in("/proc/" + std::to_string(pid_) + "/status");
+    std::string line;
+    while (std::getline(in, line))
+      if (line.rfind("SigCgt:", 0) == 0)
+        return (std::stoull(line.substr(7), nullptr, 16) >> (sig - 1)) & 1u;
+    return false;
+  }
 
  private:
   pid_t pid_ = -1;

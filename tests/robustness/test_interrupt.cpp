@@ -43,6 +43,10 @@ TEST_P(Interrupt, StopsWithinASecondAndLeavesNothing) {
   testing::ChildProcess child(argv, err.string());
   ASSERT_TRUE(child.started());
   std::this_thread::sleep_for(std::chrono::duration<double>(c.after));
+  // The delay is meant to land mid-run; on a loaded machine the process may not even have
+  // installed its handlers yet, so wait (up to 10 s) until it has.
+  for (int i = 0; i < 1000 && child.running() && !child.catches(c.signal); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   ASSERT_TRUE(child.running()) << "the run ended before the signal; make it longer\n"
                                << readText(err);
 

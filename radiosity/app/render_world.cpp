@@ -1,0 +1,93 @@
+#include "radiosity/app/render_world.h"
+
+#include <chrono>
+#include <optional>
+
+#include "radiosity/app/saved_solution.h"
+#include "radiosity/core/log.h"
+#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_mesh.h"
+
+namespace rad {
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+}  // namespace
+
+RenderWorld::RenderWorld(SolveOptions solve, const std::string& cameraFile,
+                         bool reuseSavedSolution)
+    : solve_(std::move(solve)), reuseSavedSolution_(reuseSavedSolution) {
+  if (!cameraFile.empty()) motionSpec_ = loadMotionSpec(cameraFile);
+}
+
+RenderWorld::~RenderWorld() = default;
+
+void RenderWorld::skip(const std::string& what, const std::string& why) {
+  for (const SkipNote& s : skipped_)
+    if (s.what == what) return;
+  logInfo("skipped: " + what + " (" + why + ")");
+  skipped_.push_back({what, why});
+}
+
+RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
+  if (method.needsSolve) {
+    if (!solved_) {
+      const auto t = Clock::now();
+      Scene scene = loadObjScene(solve_.scenePath);
+      requireEmitter(scene);
+      std::string whyNot = "--fresh-solve";
+      std::optional<SolveResult> saved;
+      if (reuseSavedSolution_) saved = loadSavedSolution(solve_.outputDir, scene, solve_, whyNot);
+      if (saved) {
+        solved_ = std::make_unique<SolveResult>(std::move(*saved));
+        reusedSolution_ = true;
+        skip("radiosity solve", "reused the solution saved in " + solve_.outputDir);
+      } else {
+        if (reuseSavedSolution_) logInfo("solving (" + whyNot + ")");
+        solved_ = std::make_unique<SolveResult>(solveScene(std::move(scene), solve_));
+      }
+      solveSeconds_ += since(t);
+      const auto b = Clock::now();
+      solvedCaster_ = std::make_unique<RayCaster>(*solved_->mesh);
+      solvedView_ = std::make_unique<RenderScene>(solved_->scene, *solved_->mesh, *solvedCaster_);
+      bvhSeconds_ += since(b);
+    }
+    if (!motionSpec_.empty())
+      skip("motion blur for --method " + method.name, "only methods that sample time render it");
+    return {solvedView_.get(), &solved_->radiosity};
+  }
+
+  if (!scene_) {
+    scene_ = std::make_unique<Scene>(loadObjScene(solve_.scenePath));
+    requireEmitter(*scene_);
+    mesh_ = std::make_unique<PatchMesh>(buildPatchMesh(*scene_));
+    skip("radiosity solve", "--method " + method.name + " needs only the scene's triangles");
+  }
+  if (method.usesMotion && !motionSpec_.empty()) {
+    if (!motionView_) {
+      motion_ = std::make_unique<SceneMotion>(*scene_, *mesh_, motionSpec_);
+      const auto b = Clock::now();
+      motionCaster_ = std::make_unique<RayCaster>(*mesh_, &motion_->vertices());
+      motionView_ = std::make_unique<RenderScene>(*scene_, *mesh_, *motionCaster_, motion_.get());
+      bvhSeconds_ += since(b);
+      logInfo("motion blur: " + std::to_string(motionSpec_.objects.size()) + " moving object(s), " +
+              std::to_string(motion_->movingElements()) + " elements, shutter [" +
+              std::to_string(motionSpec_.shutterOpen) + ", " +
+              std::to_string(motionSpec_.shutterClose) + "]");
+    }
+    return {motionView_.get(), nullptr};
+  }
+  if (!motionSpec_.empty())
+    skip("motion blur for --method " + method.name, "only methods that sample time render it");
+  if (!view_) {
+    const auto b = Clock::now();
+    caster_ = std::make_unique<RayCaster>(*mesh_);
+    view_ = std::make_unique<RenderScene>(*scene_, *mesh_, *caster_);
+    bvhSeconds_ += since(b);
+  }
+  return {view_.get(), nullptr};
+}
+
+}  // namespace rad
