@@ -1,5 +1,8 @@
 #include "meshing/adaptive_refinement.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -9,26 +12,72 @@
 namespace rad {
 namespace {
 
-// Corner values as displayed: VertexInterpolation's per-vertex means of the luminance.
-std::vector<std::array<double, 3>> cornerValues(const PatchMesh& mesh, const std::vector<double>& luminance) {
+// Per element, the values displayed at its corners (VertexInterpolation's area-weighted means of
+// the luminance) and the value the solution suggests there: a plane fitted, weighted by area, to
+// the centroid values of the elements around the corner, evaluated at the corner. The two agree
+// where the field is linear and the vertex sits in the middle of its elements; they differ by
+// about h·|∇L| at a border or a crease (the mean is one-sided there) and where the field bends.
+struct Corners {
+  std::vector<std::array<double, 3>> displayed, recovered;
+};
+
+Corners cornerValues(const PatchMesh& mesh, const std::vector<double>& luminance) {
   const VertexInterpolation interpolation(mesh);
   std::vector<Eigen::Vector3d> perElement(mesh.elementCount());
   for (int e = 0; e < mesh.elementCount(); ++e) perElement[e] = Eigen::Vector3d(luminance[e], 0, 0);
   const std::vector<Eigen::Vector3d> atVertices = interpolation.interpolate(perElement);
-  std::vector<std::array<double, 3>> corners(mesh.elementCount());
+  std::vector<double> recovered(interpolation.vertexCount());
+  for (int v = 0; v < interpolation.vertexCount(); ++v) {
+    recovered[v] = atVertices[v].x();
+    const Eigen::Vector3d n = interpolation.normal(v);
+    const Eigen::Vector3d t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    for (int f : interpolation.elementsAround(v)) {
+      const Eigen::Vector3d d = mesh.centroid(f) - interpolation.position(v);
+      const Eigen::Vector3d basis(1, d.dot(t1), d.dot(t2));
+      normal += mesh.area(f) * basis * basis.transpose();
+      rhs += mesh.area(f) * luminance[f] * basis;
+    }
+    // A plane needs centroids that span both directions about their mean (at least three, not in
+    // a line); otherwise keep the mean.
+    const double weight = normal(0, 0);
+    if (!(weight > 0)) continue;
+    const Eigen::Vector2d first = normal.block<2, 1>(1, 0);
+    const Eigen::Matrix2d spread = normal.block<2, 2>(1, 1) - first * first.transpose() / weight;
+    const Eigen::Vector2d moments =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(spread).eigenvalues();
+    if (moments[1] > 0 && moments[0] > 1e-2 * moments[1])
+      recovered[v] = normal.ldlt().solve(rhs)[0];
+  }
+  Corners corners;
+  corners.displayed.resize(mesh.elementCount());
+  corners.recovered.resize(mesh.elementCount());
   for (int e = 0; e < mesh.elementCount(); ++e)
-    for (int k = 0; k < 3; ++k) corners[e][k] = atVertices[interpolation.triangle(e)[k]].x();
+    for (int k = 0; k < 3; ++k) {
+      const int v = interpolation.triangle(e)[k];
+      corners.displayed[e][k] = atVertices[v].x();
+      corners.recovered[e][k] = recovered[v];
+    }
   return corners;
+}
+
+// How far what is displayed over element e is from the solution: the displayed mean against the
+// element's value, and the displayed corner values against the recovered ones.
+double displayError(const Corners& c, const std::vector<double>& luminance, int e) {
+  const auto& shown = c.displayed[e];
+  double error = std::fabs((shown[0] + shown[1] + shown[2]) / 3 - luminance[e]);
+  for (int k = 0; k < 3; ++k) error = std::max(error, std::fabs(shown[k] - c.recovered[e][k]));
+  return error;
 }
 
 }  // namespace
 
-std::vector<double> displayedVariation(const PatchMesh& mesh, const std::vector<double>& luminance) {
-  const auto corners = cornerValues(mesh, luminance);
+std::vector<double> displayedVariation(const PatchMesh& mesh,
+                                       const std::vector<double>& luminance) {
+  const Corners corners = cornerValues(mesh, luminance);
   std::vector<double> variation(mesh.elementCount());
-  for (int e = 0; e < mesh.elementCount(); ++e) {
-    variation[e] = std::fabs((corners[e][0] + corners[e][1] + corners[e][2]) / 3 - luminance[e]);
-  }
+  for (int e = 0; e < mesh.elementCount(); ++e) variation[e] = displayError(corners, luminance, e);
   return variation;
 }
 
@@ -44,14 +93,14 @@ std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<do
   mean = area > 0 ? mean / area : 0;
   const double noise = 1e-3 * mean;
 
-  const auto corners = cornerValues(mesh, luminance);
+  const Corners corners = cornerValues(mesh, luminance);
   std::vector<int> selected;
   std::vector<double> priority(n, 0.0);
   for (int e = 0; e < n; ++e) {
     if (mesh.area(e) <= options.minArea) continue;
-    const double defect = std::fabs((corners[e][0] + corners[e][1] + corners[e][2]) / 3 - luminance[e]);
+    const double defect = displayError(corners, luminance, e);
     double local = luminance[e], spread = 0;
-    for (double c : corners[e]) {
+    for (double c : corners.displayed[e]) {
       local = std::max(local, c);
       spread = std::max(spread, std::fabs(c - luminance[e]));
     }
@@ -67,14 +116,16 @@ std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<do
   }
   // Largest share of the displayed error first; ties (equal priority) by index, so the order
   // does not depend on the sort's implementation.
-  std::stable_sort(selected.begin(), selected.end(), [&](int a, int b) { return priority[a] > priority[b]; });
+  std::stable_sort(selected.begin(), selected.end(),
+                   [&](int a, int b) { return priority[a] > priority[b]; });
   return selected;
 }
 
 std::vector<int> refineElements(PatchMesh& mesh, const std::vector<int>& selected,
                                 const RefinementOptions& options, int targetElements) {
   const int before = mesh.elementCount();
-  const int limit = options.maxElements > 0 ? std::min(targetElements, options.maxElements) : targetElements;
+  const int limit =
+      options.maxElements > 0 ? std::min(targetElements, options.maxElements) : targetElements;
   // Corners and areas of every element before, to find the ones a split changed.
   std::vector<std::array<int, 3>> corners(before);
   std::vector<double> areaBefore(before);
@@ -97,7 +148,8 @@ std::vector<int> refineElements(PatchMesh& mesh, const std::vector<int>& selecte
 int refinementTarget(int start, int budget, int pass, int passes) {
   if (passes <= 0 || budget <= start) return std::max(start, budget);
   const double fraction = std::min(1.0, static_cast<double>(pass + 1) / passes);
-  return static_cast<int>(std::lround(start * std::pow(static_cast<double>(budget) / start, fraction)));
+  return static_cast<int>(
+      std::lround(start * std::pow(static_cast<double>(budget) / start, fraction)));
 }
 
 }  // namespace rad

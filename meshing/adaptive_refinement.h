@@ -8,25 +8,29 @@ namespace rad {
 
 struct RefinementOptions {
   // An element is a candidate for splitting when the radiance shown over it (linear interpolation
-  // of the vertex values) departs from its solved value by more than threshold × the local
-  // radiance (the larger of the element's and its corners' values).
+  // of the vertex values) departs from the solution by more than threshold × the local radiance
+  // (the larger of the element's and its corners' values): see displayedVariation().
   double threshold = 0.1;
-  double minArea = 0;    // elements at or below this area are never split
-  int maxElements = 0;   // never split beyond this count (0: no limit)
+  double minArea = 0;   // elements at or below this area are never split
+  int maxElements = 0;  // never split beyond this count (0: no limit)
 };
 
-// Per element, how far the radiance a viewer sees over it departs from the solution: the largest
-// difference between the element's own value and the interpolated values at its corners
-// (VertexInterpolation: area-weighted means of the elements around each corner, kept apart at
-// creases and material borders). Zero where the solution is constant; about h·|∇L| on a smooth
-// gradient of an element of size h; about half the jump where a shadow edge or a contact crosses
-// the element, however small the element. Same units as `luminance`.
+// Per element, an estimate of how far the radiance a viewer sees over it (linear interpolation of
+// VertexInterpolation's vertex values: area-weighted means of the elements around each corner,
+// kept apart at creases and material borders) is from the solution: the larger of (a) the
+// displayed mean over the element against its solved value, and (b) at each corner, the displayed
+// value against a plane fitted by area-weighted least squares to the values of the elements
+// around that corner, evaluated at the corner (gradient recovery, as in Zienkiewicz–Zhu). Zero
+// for a linear field; about h·|∇L| at a border or crease, where a corner's mean is one-sided;
+// about h²·|∇²L| where the field bends; a fraction of the jump where a shadow edge or a contact
+// crosses, however small the element. Same units as `luminance`.
 std::vector<double> displayedVariation(const PatchMesh& mesh, const std::vector<double>& luminance);
 
 // Elements worth splitting after a solve, most important first. Candidates are the elements
-// whose displayed variation exceeds the relative threshold, and those a shadow boundary crosses
-// (partlyShadowed[e] != 0; may be empty); variations below 1e-3 of the mean luminance are noise
-// and ignored, and elements at or below minArea are left alone. The order is by area × variation²,
+// whose displayed error (above) exceeds the relative threshold, and those a shadow boundary
+// crosses (partlyShadowed[e] != 0; may be empty), counted at the spread of their displayed corner
+// values since their mean can hide the jump; errors below 1e-3 of the mean luminance are noise
+// and ignored, and elements at or below minArea are left alone. The order is by area × error²,
 // an element's share of the area-weighted squared error of what is displayed, so a limited budget
 // goes where it removes the most error.
 std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<double>& luminance,

@@ -28,17 +28,39 @@ TEST(AdaptiveRefinement, AGentleLinearGradientIsNotRefined) {
   // Linear interpolation shows a linear field exactly (up to the one-sided vertex means at the
   // border, a few per cent of the 10% change across the square here), so nothing is worth a split.
   const PatchMesh mesh = unitSquare(1.0 / 64);
-  const auto values = sampled(mesh, [](const Eigen::Vector3d& c) { return 1.0 + 0.1 * c.x() + 0.05 * c.y(); });
+  const auto values =
+      sampled(mesh, [](const Eigen::Vector3d& c) { return 1.0 + 0.1 * c.x() + 0.05 * c.y(); });
   EXPECT_TRUE(selectForRefinement(mesh, values, {}, {0.1, 0, 0}).empty());
+}
+
+TEST(AdaptiveRefinement, OneSidedMeansAtABorderAreSeenOnASteepGradient) {
+  // L = 1 + 10 x: inside, the corner means sit on the plane; at the borders x = 0 and x = 1 each
+  // corner's mean is taken on one side only and misses the recovered (exact) value by about
+  // 10 · h / 3. The estimate must see that, and stay near zero inside.
+  const PatchMesh mesh = unitSquare(1.0 / 256);
+  const double h = std::sqrt(2.0 / 256);
+  const auto values = sampled(mesh, [](const Eigen::Vector3d& c) { return 1.0 + 10.0 * c.x(); });
+  const std::vector<double> error = displayedVariation(mesh, values);
+  double border = 0, inside = 0;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const Eigen::Vector3d c = mesh.centroid(e);
+    const double distance = std::min({c.x(), 1 - c.x(), c.y(), 1 - c.y()});
+    if (distance > 1.5 * h) inside = std::max(inside, error[e]);
+    if (c.x() < 0.5 * h || c.x() > 1 - 0.5 * h) border = std::max(border, error[e]);
+  }
+  EXPECT_GT(border, 10.0 * h / 10);
+  EXPECT_LT(inside, 1e-9);
 }
 
 TEST(AdaptiveRefinement, AStepIsRefinedAlongItsLineOnly) {
   const PatchMesh mesh = unitSquare(1.0 / 64);
   const double h = std::sqrt(2.0 / 64);  // longest edge of an element
-  const auto values = sampled(mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.37 ? 1.0 : 0.1; });
+  const auto values =
+      sampled(mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.37 ? 1.0 : 0.1; });
   const std::vector<int> selected = selectForRefinement(mesh, values, {}, {0.1, 0, 0});
   ASSERT_FALSE(selected.empty());
-  for (int e : selected) EXPECT_LT(std::fabs(mesh.centroid(e).x() - 0.37), 1.5 * h) << "element " << e;
+  for (int e : selected)
+    EXPECT_LT(std::fabs(mesh.centroid(e).x() - 0.37), 1.5 * h) << "element " << e;
 }
 
 TEST(AdaptiveRefinement, LargerErrorsComeFirst) {
@@ -75,7 +97,8 @@ TEST(AdaptiveRefinement, ShadowEdgeElementsAreCandidatesEvenWhenTheirMeanLooksRi
 
 TEST(AdaptiveRefinement, RefinementStopsAtTheTargetAndKeepsTheArea) {
   PatchMesh mesh = unitSquare(1.0 / 16);
-  const auto values = sampled(mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.37 ? 1.0 : 0.1; });
+  const auto values =
+      sampled(mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.37 ? 1.0 : 0.1; });
   const auto selected = selectForRefinement(mesh, values, {}, {0.1, 0, 0});
   const int before = mesh.elementCount();
   ASSERT_GT(selected.size(), 4u);
@@ -90,7 +113,8 @@ TEST(AdaptiveRefinement, MinimumAreaIsNeverUndercut) {
   PatchMesh mesh = unitSquare(1.0 / 16);
   const double minArea = 1.0 / 64;
   for (int pass = 0; pass < 6; ++pass) {
-    const auto values = sampled(mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.37 ? 1.0 : 0.1; });
+    const auto values =
+        sampled(mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.37 ? 1.0 : 0.1; });
     const auto selected = selectForRefinement(mesh, values, {}, {0.1, minArea, 0});
     refineElements(mesh, selected, {0.1, minArea, 0}, 1 << 20);
   }
