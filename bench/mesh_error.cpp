@@ -1,15 +1,25 @@
 // Uniform against adaptive meshing on the Cornell box, in object space: the error of each
-// solution's interpolated radiance (what vertex colours and lightmaps show) against a fine
-// reference solution, at the reference's element centroids, weighted by area.
+// solution's displayed radiance (linear interpolation of the vertex values, what vertex colours
+// and lightmaps show) against a converged reference, at the reference's element centroids,
+// weighted by area (emitters excluded: they are exact in every solution).
 //
 //   mesh_error [--reference-elements N] [--out DIR]
 //
-// All solves use analytic form factors (patches shoot, elements receive) and progressive shooting
-// to 1e-5. Writes DIR/mesh_error.csv and DIR/mesh_error.svg (elements against error, log-log).
+// Every solve uses analytic form factors (patches shoot, elements receive) and progressive
+// shooting to 1e-5. The reference is a uniform mesh of about N elements whose values are point
+// values at the element centroids (one receiver point, 64 shadow rays per patch). A second
+// reference on the same elements with twice the shooting-patch area and half the shadow rays
+// (another seed) estimates how far the reference itself is from the truth. Adaptive solves start
+// from a coarse uniform mesh (386 elements, each a shooting patch) and refine with threshold 0.1
+// and the default passes and minimum area up to each element budget (--max-elements). For each
+// adaptive solve the uniform element count with the same error is read off the uniform curve
+// (log-log interpolation; extrapolated along its last segment, and flagged, past its end). Writes DIR/mesh_error.csv and DIR/mesh_error.svg, and DIR/mesh_error.png with
+// bench/plot_mesh_error.py when /usr/bin/python3 has matplotlib.
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -18,45 +28,80 @@
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
 #include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_mesh.h"
 
 namespace {
 
 using namespace rad;
 
+constexpr double kTolerance = 1e-5;
+constexpr double kThreshold = 0.1;  // adaptive: the relative displayed error that makes a candidate
+const int kRefinePasses = SolveOptions().refinePasses;
+
 struct Config {
   std::string kind;
-  int elements;
-  double threshold;
+  int startElements;  // target count of the uniform (start) mesh
+  int budget;         // adaptive: --max-elements
 };
 
-SolveResult solve(const Scene& scene, int elements, double threshold) {
+SolveResult solveUniform(const Scene& scene, int elements) {
   SolveOptions options;
   options.formFactors = FormFactorMethod::Analytic;
   options.targetElements = elements;
-  options.tolerance = 1e-5;
-  options.refineThreshold = threshold;
-  options.refinePasses = 3;
+  options.tolerance = kTolerance;
   return solveScene(scene, options);
 }
 
-// Radiance of `result` at point p on input polygon `patch`, interpolated from its vertex values
-// over the element containing p (nearest element of that patch if p is on no element).
-class RadianceField {
+// Starts from a uniform mesh whose elements are also the shooting patches (substructuring: the
+// patches stay, the elements are refined under them), so the adaptive solves shoot from as many
+// patches as the finest uniform solves below (8 × fewer patches than elements there).
+SolveResult solveAdaptive(const Scene& scene, int startElements, int budget) {
+  SolveOptions options;
+  options.formFactors = FormFactorMethod::Analytic;
+  options.targetElements = startElements;
+  options.maxArea = buildPatchMesh(scene).totalArea() / startElements;
+  options.patchArea = options.maxArea;
+  options.tolerance = kTolerance;
+  options.refineThreshold = kThreshold;
+  options.refinePasses = kRefinePasses;
+  options.maxElements = budget;
+  return solveScene(scene, options);
+}
+
+// A reference solve: point values at the element centroids (one receiver point), shooting patches
+// of patchFactor × the element area.
+SolveResult solveReference(const Scene& scene, int elements, double patchFactor, int shadowRays, uint64_t seed) {
+  SolveOptions options;
+  options.formFactors = FormFactorMethod::Analytic;
+  options.maxArea = buildPatchMesh(scene).totalArea() / elements;
+  options.patchArea = patchFactor * options.maxArea;
+  options.receiverPoints = 1;
+  options.shadowRays = shadowRays;
+  options.seed = seed;
+  options.tolerance = 1e-6;
+  return solveScene(scene, options);
+}
+
+Eigen::Vector3d radiance(const Rgb& b) { return Eigen::Vector3d(b.r, b.g, b.b) / M_PI; }
+
+// The displayed radiance of a solution at a point p of input polygon `patch`: linear interpolation
+// of its vertex values over the element containing p (the nearest element of that patch if p is
+// on none, by rounding).
+class DisplayedRadiance {
  public:
-  explicit RadianceField(const SolveResult& r) : result_(r), interpolation_(*r.mesh) {
+  explicit DisplayedRadiance(const SolveResult& r) : result_(r), interpolation_(*r.mesh) {
     std::vector<Eigen::Vector3d> perElement(r.radiosity.size());
-    for (size_t e = 0; e < perElement.size(); ++e)
-      perElement[e] = Eigen::Vector3d(r.radiosity[e].r, r.radiosity[e].g, r.radiosity[e].b) / M_PI;
+    for (size_t e = 0; e < perElement.size(); ++e) perElement[e] = radiance(r.radiosity[e]);
     vertexValues_ = interpolation_.interpolate(perElement);
     byPatch_.resize(r.mesh->patchCount());
     for (int e = 0; e < r.mesh->elementCount(); ++e) byPatch_[r.mesh->patch(e)].push_back(e);
   }
 
-  Eigen::Vector3d at(int patch, const Eigen::Vector3d& p) const {
+  // Element containing p and p's barycentric weights in it.
+  int locate(int patch, const Eigen::Vector3d& p, Eigen::Vector3d& weights) const {
     const PatchMesh& mesh = *result_.mesh;
     int best = -1;
     double bestOutside = 1e300;
-    Eigen::Vector3d bestWeights = Eigen::Vector3d::Zero();
     for (int e : byPatch_[patch]) {
       const auto c = mesh.corners(e);
       const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]);
@@ -67,13 +112,17 @@ class RadianceField {
       if (outside < bestOutside) {
         bestOutside = outside;
         best = e;
-        bestWeights = w;
+        weights = w;
         if (outside == 0) break;
       }
     }
-    const auto& t = interpolation_.triangle(best);
-    return bestWeights[0] * vertexValues_[t[0]] + bestWeights[1] * vertexValues_[t[1]] +
-           bestWeights[2] * vertexValues_[t[2]];
+    return best;
+  }
+
+  Eigen::Vector3d at(int patch, const Eigen::Vector3d& p) const {
+    Eigen::Vector3d w;
+    const auto& t = interpolation_.triangle(locate(patch, p, w));
+    return w[0] * vertexValues_[t[0]] + w[1] * vertexValues_[t[1]] + w[2] * vertexValues_[t[2]];
   }
 
  private:
@@ -83,58 +132,121 @@ class RadianceField {
   std::vector<std::vector<int>> byPatch_;
 };
 
+// Relative RMS over the reference's non-emitting elements, area-weighted, of value(e) − truth(e).
+template <class Value>
+double relativeRms(const SolveResult& reference, Value value) {
+  const PatchMesh& ref = *reference.mesh;
+  double num = 0, den = 0;
+  for (int e = 0; e < ref.elementCount(); ++e) {
+    if (reference.problem.emission[e].maxComponent() > 0) continue;
+    const Eigen::Vector3d truth = radiance(reference.radiosity[e]);
+    num += ref.area(e) * (value(e) - truth).squaredNorm();
+    den += ref.area(e) * truth.squaredNorm();
+  }
+  return std::sqrt(num / den);
+}
+
+double seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  int referenceElements = 6000;
+  int referenceElements = 4000;
   std::string outDir = "bench/mesh_results";
-  for (int i = 1; i + 1 < argc; i += 2) {
+  for (int i = 1; i < argc; i += 2) {
     const std::string flag = argv[i];
-    if (flag == "--reference-elements") referenceElements = std::stoi(argv[i + 1]);
-    else if (flag == "--out") outDir = argv[i + 1];
+    if (i + 1 < argc && flag == "--reference-elements") referenceElements = std::atoi(argv[i + 1]);
+    else if (i + 1 < argc && flag == "--out") outDir = argv[i + 1];
     else {
       std::fprintf(stderr, "usage: mesh_error [--reference-elements N] [--out DIR]\n");
       return 2;
     }
   }
+  if (referenceElements < 500) {
+    std::fprintf(stderr, "mesh_error: --reference-elements must be at least 500\n");
+    return 2;
+  }
   setLogLevel(LogLevel::Quiet);
   const Scene scene = loadObjScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
   auto t0 = std::chrono::steady_clock::now();
-  const SolveResult reference = solve(scene, referenceElements, 0);
-  std::fprintf(stderr, "reference: %d elements in %.1f s\n", reference.mesh->elementCount(),
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  const SolveResult reference = solveReference(scene, referenceElements, 8, 64, 1);
+  std::fprintf(stderr, "reference: %d elements, %d shooting patches, %.1f s\n", reference.mesh->elementCount(),
+               reference.shooters, seconds(t0));
+  // How far is the reference from the truth? A second one on the same elements with coarser
+  // shooting patches and fewer shadow rays (another seed) differs from it by about its own error
+  // or more: the errors of both shrink with patch size and ray count.
+  t0 = std::chrono::steady_clock::now();
+  const SolveResult check = solveReference(scene, referenceElements, 16, 32, 2);
+  const DisplayedRadiance checkField(check);
+  const double referenceError = relativeRms(reference, [&](int e) {
+    Eigen::Vector3d w;
+    return radiance(check.radiosity[checkField.locate(reference.mesh->patch(e), reference.mesh->centroid(e), w)]);
+  });
+  std::fprintf(stderr, "reference check: %d elements, %d shooting patches, %.1f s: relative RMS difference %.4f\n",
+               check.mesh->elementCount(), check.shooters, seconds(t0), referenceError);
 
   std::vector<Config> configs;
-  for (int n : {125, 250, 500, 1000, 2000}) configs.push_back({"uniform", n, 0});
-  for (int n : {125, 250, 500}) configs.push_back({"adaptive", n, 0.1});
-  for (int n : {125, 250}) configs.push_back({"adaptive", n, 0.05});
+  for (int n : {125, 250, 500, 1000, 2000, 4000}) configs.push_back({"uniform", n, 0});
+  for (int budget : {800, 1600, 3200}) configs.push_back({"adaptive", 250, budget});
 
-  std::ofstream csv(outDir + "/mesh_error.csv");
-  csv << "kind,target_elements,elements,relative_rms_error,seconds\n";
-  struct Point { std::string kind; int elements; double error; };
+  struct Point {
+    Config config;
+    int elements, shooters;
+    double error, seconds;
+  };
   std::vector<Point> points;
   for (const Config& c : configs) {
     t0 = std::chrono::steady_clock::now();
-    const SolveResult r = solve(scene, c.elements, c.threshold);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const RadianceField field(r);
-    double num = 0, den = 0;
+    const SolveResult r = c.kind == "uniform" ? solveUniform(scene, c.startElements)
+                                              : solveAdaptive(scene, c.startElements, c.budget);
+    const double time = seconds(t0);
+    const DisplayedRadiance field(r);
     const PatchMesh& ref = *reference.mesh;
-    for (int e = 0; e < ref.elementCount(); ++e) {
-      if (reference.problem.emission[e].maxComponent() > 0) continue;  // emitters are exact in both
-      const Eigen::Vector3d truth =
-          Eigen::Vector3d(reference.radiosity[e].r, reference.radiosity[e].g, reference.radiosity[e].b) / M_PI;
-      const Eigen::Vector3d value = field.at(ref.patch(e), ref.centroid(e));
-      num += ref.area(e) * (value - truth).squaredNorm();
-      den += ref.area(e) * truth.squaredNorm();
-    }
-    const double error = std::sqrt(num / den);
-    points.push_back({c.kind, r.mesh->elementCount(), error});
-    csv << c.kind << "," << c.elements << "," << r.mesh->elementCount() << "," << error << "," << seconds << "\n";
-    std::printf("%-9s target %5d  elements %5d  relative RMS error %.4f  (%.1f s)\n", c.kind.c_str(), c.elements,
-                r.mesh->elementCount(), error, seconds);
-    std::fflush(stdout);
+    const double error = relativeRms(reference, [&](int e) { return field.at(ref.patch(e), ref.centroid(e)); });
+    points.push_back({c, r.mesh->elementCount(), r.shooters, error, time});
+    std::fprintf(stderr, "%-8s start %5d budget %5d: %5d elements, %4d patches, relative RMS error %.4f (%.1f s)\n",
+                 c.kind.c_str(), c.startElements, c.budget, r.mesh->elementCount(), r.shooters, error, time);
   }
+
+  // Uniform elements needed for the same error as each adaptive mesh: log-log interpolation along
+  // the uniform curve, extrapolated along its last segment below its smallest error.
+  std::vector<std::pair<double, double>> uniform;  // (log elements, log error), fewest elements first
+  for (const Point& p : points)
+    if (p.config.kind == "uniform") uniform.push_back({std::log(p.elements), std::log(p.error)});
+  auto uniformElementsFor = [&](double error, bool& extrapolated) {
+    const double y = std::log(error);
+    size_t k = 1;
+    while (k + 1 < uniform.size() && uniform[k].second > y) ++k;
+    extrapolated = y < uniform.back().second || y > uniform.front().second;
+    const auto& [x0, y0] = uniform[k - 1];
+    const auto& [x1, y1] = uniform[k];
+    return std::exp(x0 + (y - y0) * (x1 - x0) / (y1 - y0));
+  };
+
+  std::ofstream csv(outDir + "/mesh_error.csv");
+  csv << "kind,start_target,budget,elements,shooting_patches,relative_rms_error,seconds,"
+         "uniform_elements_same_error,element_ratio,extrapolated\n";
+  for (const Point& p : points) {
+    csv << p.config.kind << "," << p.config.startElements << "," << p.config.budget << "," << p.elements << ","
+        << p.shooters << "," << p.error << "," << p.seconds << ",";
+    if (p.config.kind == "adaptive") {
+      bool extrapolated = false;
+      const double same = uniformElementsFor(p.error, extrapolated);
+      csv << std::lround(same) << "," << same / p.elements << "," << (extrapolated ? 1 : 0) << "\n";
+      std::printf("adaptive %5d elements: error %.4f, uniform needs %5ld elements for it (%.2f×%s)\n", p.elements,
+                  p.error, std::lround(same), same / p.elements, extrapolated ? ", extrapolated" : "");
+    } else {
+      csv << ",,\n";
+      std::printf("uniform  %5d elements: error %.4f\n", p.elements, p.error);
+    }
+  }
+  csv << "reference," << referenceElements << ",0," << reference.mesh->elementCount() << "," << reference.shooters
+      << "," << referenceError << ",0,,,\n";
+  std::printf("reference %d elements; its check differs from it by %.4f (relative RMS)\n",
+              reference.mesh->elementCount(), referenceError);
+  csv.close();
 
   // Log-log plot, elements against error.
   double x0 = 1e9, x1 = 0, y0 = 1e9, y1 = 0;
@@ -160,11 +272,18 @@ int main(int argc, char** argv) {
   for (const std::string kind : {"uniform", "adaptive"}) {
     const char* colour = kind == "uniform" ? "#2c3e50" : "#c0392b";
     svg << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" points=\"";
-    for (const auto& p : points) if (p.kind == kind) svg << px(p.elements) << "," << py(p.error) << " ";
+    for (const auto& p : points) if (p.config.kind == kind) svg << px(p.elements) << "," << py(p.error) << " ";
     svg << "\"/>\n";
     for (const auto& p : points)
-      if (p.kind == kind) svg << "<circle cx=\"" << px(p.elements) << "\" cy=\"" << py(p.error) << "\" r=\"3\" fill=\"" << colour << "\"/>\n";
+      if (p.config.kind == kind) svg << "<circle cx=\"" << px(p.elements) << "\" cy=\"" << py(p.error) << "\" r=\"3\" fill=\"" << colour << "\"/>\n";
   }
-  svg << "<text x=\"460\" y=\"70\" fill=\"#2c3e50\">uniform</text><text x=\"460\" y=\"86\" fill=\"#c0392b\">adaptive (threshold 0.3)</text>\n</svg>\n";
+  svg << "<text x=\"440\" y=\"70\" fill=\"#2c3e50\">uniform</text><text x=\"440\" y=\"86\" fill=\"#c0392b\">adaptive (threshold "
+      << kThreshold << ")</text>\n</svg>\n";
+  svg.close();
+
+  // The PNG plot, where Debian's python has matplotlib (scripts/setup.sh --bench).
+  const std::string plot = std::string("/usr/bin/python3 ") + RADIOSITY_SOURCE_DIR "/bench/plot_mesh_error.py " + outDir;
+  if (std::system(plot.c_str()) != 0)
+    std::fprintf(stderr, "mesh_error: no PNG plot (run %s by hand; it needs python3-matplotlib)\n", plot.c_str());
   return 0;
 }

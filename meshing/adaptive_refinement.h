@@ -7,23 +7,46 @@
 namespace rad {
 
 struct RefinementOptions {
-  double threshold = 0.1;   // relative difference of luminance between neighbours that splits
-  double minArea = 0;       // elements at or below this area are never split
-  int maxElements = 0;      // stop splitting at this count (0: no limit)
+  // An element is a candidate for splitting when the radiance shown over it (linear interpolation
+  // of the vertex values) departs from the solution by more than threshold × the local radiance
+  // (the larger of the element's and its corners' values): see displayedVariation().
+  double threshold = 0.1;
+  double minArea = 0;   // elements at or below this area are never split
+  int maxElements = 0;  // never split beyond this count (0: no limit)
 };
 
-// Elements to split after a solve, where the solution is not smooth: an element whose luminance
-// differs from that of a neighbour across an edge (same material, surfaces meeting at less than
-// 30°) by more than threshold × the larger of the two, or that a shadow boundary crosses
-// (partlyShadowed[e] != 0; may be empty). Differences below 1e-3 of the mean luminance are
-// ignored, so the dark corners of a scene are not refined for noise.
+// Per element, an estimate of how far the radiance a viewer sees over it (linear interpolation of
+// VertexInterpolation's vertex values: area-weighted means of the elements around each corner,
+// kept apart at creases and material borders) is from the solution: the larger of (a) the
+// displayed mean over the element against its solved value, and (b) at each corner, the displayed
+// value against a plane fitted by area-weighted least squares to the values of the elements
+// around that corner, evaluated at the corner (gradient recovery, as in Zienkiewicz–Zhu). Zero
+// for a linear field; about h·|∇L| at a border or crease, where a corner's mean is one-sided;
+// about h²·|∇²L| where the field bends; a fraction of the jump where a shadow edge or a contact
+// crosses, however small the element. Same units as `luminance`.
+std::vector<double> displayedVariation(const PatchMesh& mesh, const std::vector<double>& luminance);
+
+// Elements worth splitting after a solve, most important first. Candidates are the elements
+// whose displayed error (above) exceeds the relative threshold, and those a shadow boundary
+// crosses (partlyShadowed[e] != 0; may be empty), counted at the spread of their displayed corner
+// values since their mean can hide the jump; errors below 1e-3 of the mean luminance are noise
+// and ignored, and elements at or below minArea are left alone. The order is by area × error²,
+// an element's share of the area-weighted squared error of what is displayed, so a limited budget
+// goes where it removes the most error.
 std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<double>& luminance,
                                      const std::vector<char>& partlyShadowed,
                                      const RefinementOptions& options);
 
-// Bisects the selected elements (longest edge, conforming) while the budget allows. Returns every
-// element whose geometry changed or that is new: the ones a solver must recompute.
+// Bisects the selected elements in order (longest edge, conforming) until the mesh holds
+// `targetElements` (and never more than options.maxElements when that is set). An element already
+// halved by a neighbour's split is not split again in the same call. Returns every element whose
+// geometry changed or that is new: the ones a solver must recompute.
 std::vector<int> refineElements(PatchMesh& mesh, const std::vector<int>& selected,
-                                const RefinementOptions& options);
+                                const RefinementOptions& options, int targetElements);
+
+// Element count to reach after refinement pass `pass` (0-based) of `passes`, growing
+// geometrically from `start` to `budget`, so each pass refines on a solution that already
+// reflects the previous splits and the budget is spent over all passes.
+int refinementTarget(int start, int budget, int pass, int passes);
 
 }  // namespace rad

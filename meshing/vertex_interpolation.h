@@ -24,6 +24,11 @@ class VertexInterpolation {
 
   std::vector<Eigen::Vector3d> interpolate(const std::vector<Eigen::Vector3d>& perElement) const;
 
+  // The elements whose means make up output vertex v's value.
+  std::vector<int> elementsAround(int vertex) const {
+    return {elements_.begin() + offsets_[vertex], elements_.begin() + offsets_[vertex + 1]};
+  }
+
  private:
   std::vector<Eigen::Vector3d> positions_, normals_;
   std::vector<std::array<int, 3>> triangles_;

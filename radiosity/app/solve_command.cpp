@@ -49,14 +49,17 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
                      "analytic: visibility rays per receiver point and patch")
       ->default_val(options.shadowRays);
   command.add_option("--refine-threshold", options.refineThreshold,
-                     "adaptive refinement (analytic, progressive): split elements whose radiance "
-                     "differs from a neighbour's by more than this fraction, or that a shadow "
-                     "boundary crosses (0: uniform mesh only)");
+                     "adaptive refinement (analytic, progressive): elements whose displayed "
+                     "(vertex-interpolated) radiance departs from their solved value by more than "
+                     "this fraction, or that a shadow boundary crosses, may be split, largest "
+                     "area × error² first (0: uniform mesh only)");
   command.add_option("--min-area", options.minArea,
-                     "refinement: smallest element area (default: element area / 16)");
+                     "refinement: smallest element area (default: total area / max elements / 16)");
   command.add_option("--max-elements", options.maxElements,
-                     "refinement: element budget (default: 8 × the uniform mesh)");
-  command.add_option("--refine-passes", options.refinePasses, "refinement: solve-and-refine rounds")
+                     "refinement: element budget, spent over the passes (default: 8 × the uniform mesh)");
+  command.add_option("--refine-passes", options.refinePasses,
+                     "refinement: solve-and-refine rounds; each grows the mesh by the same factor "
+                     "towards --max-elements")
       ->default_val(options.refinePasses);
   command.add_option("--time-limit", options.timeLimit,
                      "Stop iterating after this many seconds and keep the solution so far, flagged "

@@ -326,9 +326,11 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   }
 
   const bool refine = options.refineThreshold > 0;
+  // The budget, and the smallest element: 1/16 of the area elements would have if the whole
+  // budget were spread evenly, so shadow edges can be resolved well below the even spacing.
+  const int budget = options.maxElements > 0 ? options.maxElements : 8 * mesh.elementCount();
   RefinementOptions refinement{options.refineThreshold,
-                               options.minArea > 0 ? options.minArea : result.maxArea / 16,
-                               options.maxElements > 0 ? options.maxElements : 8 * mesh.elementCount()};
+                               options.minArea > 0 ? options.minArea : totalArea / budget / 16, budget};
   result.elementsBeforeRefinement = mesh.elementCount();
   int unrefined = -1;  // elements the last refinement pass left alone
   for (int pass = 0;; ++pass) {
@@ -367,8 +369,9 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     progress.finish(solver->progressMeasure() + " " + formatNumber(solver->progress()) +
                     (result.converged ? "" : " (not converged)"));
     if (!refine || pass == options.refinePasses || !result.converged) break;
-    // Adaptive refinement: split where the solution jumps or a shadow boundary crosses, then let
-    // the new elements gather what was already shot and carry on shooting.
+    // Adaptive refinement: split where the displayed radiance departs most from the solution or a
+    // shadow boundary crosses, up to this pass's share of the element budget, then let the new
+    // elements gather what was already shot and carry on shooting.
     std::vector<double> luminance(mesh.elementCount());
     for (int e = 0; e < mesh.elementCount(); ++e) luminance[e] = solver->solution()[e].luminance();
     const std::vector<int> selected =
@@ -376,14 +379,16 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     unrefined = mesh.elementCount() - static_cast<int>(selected.size());
     if (selected.empty()) break;
     const int before = mesh.elementCount();
-    const std::vector<int> changed = refineElements(*result.mesh, selected, refinement);
+    const int target = refinementTarget(result.elementsBeforeRefinement, refinement.maxElements, pass,
+                                        std::max(1, options.refinePasses));
+    const std::vector<int> changed = refineElements(*result.mesh, selected, refinement, target);
     result.problem = makeProblem(result.scene, mesh);
-    analytic->meshChanged();
+    analytic->meshChanged(changed);
     static_cast<ProgressiveSolver&>(*solver).elementsChanged(
-        changed, [&](int e, int s) { return analytic->elementToShooter(e, s); });
+        changed, [&](int e, int s) { return analytic->elementToShooterCached(e, s); });
     ++result.refinementPasses;
     logInfo("refinement pass " + std::to_string(pass + 1) + ": " + std::to_string(selected.size()) +
-            " elements selected, " + std::to_string(before) + " → " + std::to_string(mesh.elementCount()) +
+            " candidates, " + std::to_string(before) + " → " + std::to_string(mesh.elementCount()) +
             " elements");
     if (mesh.elementCount() >= refinement.maxElements) {
       note(result, "further refinement", "the element budget (--max-elements) is reached");
@@ -392,8 +397,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   }
   if (unrefined > 0)
     note(result, "splitting " + std::to_string(unrefined) + " elements in the last refinement pass",
-         "their radiance is within the threshold of every neighbour and no emitter shadow "
-         "crosses them");
+         "the radiance displayed over them is within the threshold of their solved value and no "
+         "emitter shadow crosses them");
   const double solveAndRows = since(t);
   result.times.formFactors = analytic ? analytic->seconds() : cache.seconds();
   result.times.solve = std::max(0.0, solveAndRows - result.times.formFactors);

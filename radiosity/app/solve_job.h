@@ -37,10 +37,11 @@ struct SolveOptions {
   double patchArea = 0;        // analytic: largest shooting patch (scene units²); 0: 8 × max area
   int shadowRays = 16;         // analytic: visibility rays per receiver point and patch
   int receiverPoints = 3;      // analytic: 1 (centroid) or 3 (Gauss points) per element
-  double refineThreshold = 0;  // adaptive refinement: relative luminance jump that splits; 0: off
-  double minArea = 0;          // refinement: smallest element area; 0: max area / 16
+  double refineThreshold = 0;  // adaptive refinement: relative error of the displayed radiance
+                               // that makes an element a candidate for splitting; 0: off
+  double minArea = 0;          // refinement: smallest element area; 0: total area / max elements / 16
   int maxElements = 0;         // refinement: element budget; 0: 8 × the uniform mesh's count
-  int refinePasses = 4;        // refinement: solve–refine rounds
+  int refinePasses = 8;        // refinement: solve–refine rounds
   double timeLimit = 0;        // seconds from the start of the solve; 0: none. Past it the
                                // iterations stop and the solution so far is kept (not converged)
 };

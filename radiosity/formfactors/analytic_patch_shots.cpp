@@ -42,14 +42,54 @@ void AnalyticPatchShots::meshChanged() {
   normals_.resize(n);
   centroids_.resize(n);
   receiverPoints_.resize(n);
-  for (int e = 0; e < n; ++e) {
-    const auto c = mesh.corners(e);
-    normals_[e] = mesh.normal(e);
-    centroids_[e] = (c[0] + c[1] + c[2]) / 3.0;
-    // Degree-2 Gauss points (barycentric 2/3, 1/6, 1/6): interior, so never on a shared edge.
-    for (int k = 0; k < 3; ++k)
-      receiverPoints_[e][k] = (4.0 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6.0;
+  for (int e = 0; e < n; ++e) updateElementGeometry(e);
+}
+
+void AnalyticPatchShots::updateElementGeometry(int e) {
+  const auto c = mesh_.corners(e);
+  normals_[e] = mesh_.normal(e);
+  centroids_[e] = (c[0] + c[1] + c[2]) / 3.0;
+  // Degree-2 Gauss points (barycentric 2/3, 1/6, 1/6): interior, so never on a shared edge.
+  for (int k = 0; k < 3; ++k) receiverPoints_[e][k] = (4.0 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6.0;
+}
+
+void AnalyticPatchShots::meshChanged(const std::vector<int>& changed) {
+  const auto start = std::chrono::steady_clock::now();
+  const int n = mesh_.elementCount();
+  normals_.resize(n);
+  centroids_.resize(n);
+  receiverPoints_.resize(n);
+  partlyShadowed_.resize(n, 0);
+  std::vector<char> isChanged(n, 0);
+  for (int e : changed) {
+    isChanged[e] = 1;
+    partlyShadowed_[e] = 0;
+    updateElementGeometry(e);
   }
+  for (int s = 0; s < shooterCount(); ++s) {
+    if (!rows_[s]) continue;
+    std::vector<double> fresh(changed.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t k = r.begin(); k != r.end(); ++k) {
+        const int j = changed[k];
+        fresh[k] = elementToShooter(j, s) * mesh_.area(j) / shooterArea_[s];
+      }
+    });
+    std::vector<double> fraction(n, 0.0);
+    const FormFactorRow& old = *rows_[s];
+    for (size_t k = 0; k < old.targets.size(); ++k)
+      if (!isChanged[old.targets[k]]) fraction[old.targets[k]] = old.values[k];
+    for (size_t k = 0; k < changed.size(); ++k) fraction[changed[k]] = fresh[k];
+    auto row = std::make_unique<FormFactorRow>();
+    for (int j = 0; j < n; ++j)
+      if (fraction[j] > 0) {
+        row->targets.push_back(j);
+        row->values.push_back(fraction[j]);
+      }
+    row->escaped = std::max(0.0, 1.0 - row->sum());
+    rows_[s] = std::move(row);
+  }
+  seconds_ += secondsSince(start);
 }
 
 double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
@@ -71,7 +111,9 @@ double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
   const int g = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(m))));
   Rng rng(streamKey(options_.seed, static_cast<uint64_t>(receiver), static_cast<uint64_t>(shooter)));
   double sum = 0;
-  bool partial = false;
+  // A shadow edge crosses the element when one receiver point sees the patch in part, or when
+  // some points see it and others do not (the edge passes between them).
+  bool partial = false, someSee = false, someBlocked = false;
   for (int k = 0; k < points; ++k) {
     const Eigen::Vector3d x = points == 1 ? centroids_[receiver] : receiverPoints_[receiver][k];
     const double unoccluded = pointToPolygonFormFactor(x, n, polygon);
@@ -94,11 +136,18 @@ double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
     raysCast_ += inFront;
     if (inFront == 0) continue;
     if (visible > 0 && visible < inFront) partial = true;
+    someSee |= visible > 0;
+    someBlocked |= visible < inFront;
     sum += unoccluded * visible / inFront;
   }
   // Benign race: every writer stores 1.
-  if (partial && (shadowCasters_.empty() || shadowCasters_[shooter])) partlyShadowed_[receiver] = 1;
+  if ((partial || (someSee && someBlocked)) && (shadowCasters_.empty() || shadowCasters_[shooter])) partlyShadowed_[receiver] = 1;
   return sum / points;
+}
+
+double AnalyticPatchShots::elementToShooterCached(int receiver, int shooter) const {
+  if (!rows_[shooter]) return elementToShooter(receiver, shooter);
+  return rows_[shooter]->valueFor(receiver) * shooterArea_[shooter] / mesh_.area(receiver);
 }
 
 const FormFactorRow& AnalyticPatchShots::powerFractions(int shooter) {

@@ -38,9 +38,16 @@ class AnalyticPatchShots : public ShotRows {
   // and forgets the cached rows, whose element indices are stale. The BVH need not change:
   // bisection keeps the surfaces exactly where they were, and visibility needs no element ids.
   void meshChanged();
+  // The same after a refinement that changed only the `changed` elements (new ones, or ones whose
+  // corners moved): the rows already computed keep every other entry, which split_copy's stable
+  // element indices and the (seed, receiver, shooter) streams leave exactly as a fresh computation
+  // would give them, and recompute only the changed receivers. A pass then costs what it changed.
+  void meshChanged(const std::vector<int>& changed);
 
   // F from element `receiver` to shooting patch `shooter`, visibility included.
   double elementToShooter(int receiver, int shooter) const;
+  // The same, read from the shooter's row when it is already computed (no rays).
+  double elementToShooterCached(int receiver, int shooter) const;
 
   int shooterCount() const override { return mesh_.shooterCount(); }
   int shooterOf(int element) const override { return mesh_.shooter(element); }
@@ -64,6 +71,8 @@ class AnalyticPatchShots : public ShotRows {
   const std::vector<char>& partlyShadowed() const { return partlyShadowed_; }
 
  private:
+  void updateElementGeometry(int element);
+
   const PatchMesh& mesh_;
   const RayCaster& rays_;
   AnalyticOptions options_;

@@ -87,6 +87,59 @@ TEST(AnalyticPatchShots, BlockerReducesTheFactorAndMarksThePartialShadow) {
   for (int e = 0; e < open.elementCount(); ++e) EXPECT_FALSE(without.partlyShadowed()[e]);
 }
 
+TEST(AnalyticPatchShots, ShadowEdgeBetweenTheReceiverPointsIsMarked) {
+  // A small source (2 cm) at z = 2 centred over x = 0.5, and at z = 1 a plate covering x < 0.5:
+  // its shadow edge on the receiver is at x = 0.5, with a penumbra 2 cm wide. The receiver square
+  // is two elements whose Gauss points lie at least 0.16 from that line, so each point sees the
+  // source wholly or not at all; the elements are still crossed by the edge and must be marked.
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0},        {1, 0, 0},        {1, 1, 0},         {0, 1, 0},
+                                    {0.49, 0.49, 2}, {0.51, 0.49, 2}, {0.51, 0.51, 2}, {0.49, 0.51, 2},
+                                    {-5, -5, 1},      {0.5, -5, 1},     {0.5, 5, 1},       {-5, 5, 1}};
+  std::vector<PatchPolygon> polygons = {{{0, 1, 2, 3}, 0}, {{4, 7, 6, 5}, 1}, {{8, 11, 10, 9}, 2}};
+  const PatchMesh blocked = meshed(p, polygons, 100, 100);
+  const PatchMesh open = meshed(p, {polygons[0], polygons[1]}, 100, 100);
+  RayCaster blockedRays(blocked), openRays(open);
+  AnalyticPatchShots withBlocker(blocked, blockedRays, {3, 16, 1}), without(open, openRays, {3, 16, 1});
+  for (const auto* pair : {&withBlocker, &without}) {
+    const PatchMesh& mesh = pair == &withBlocker ? blocked : open;
+    for (int e = 0; e < mesh.elementCount(); ++e)
+      for (int f = 0; f < mesh.elementCount(); ++f)
+        if (mesh.patch(e) == 0 && mesh.patch(f) == 1) EXPECT_GT(pair->elementToShooter(e, mesh.shooter(f)), 0);
+  }
+  for (int e = 0; e < blocked.elementCount(); ++e)
+    if (blocked.patch(e) == 0) EXPECT_TRUE(withBlocker.partlyShadowed()[e]) << "element " << e;
+  for (int e = 0; e < open.elementCount(); ++e) EXPECT_FALSE(without.partlyShadowed()[e]);
+}
+
+TEST(AnalyticPatchShots, RowsUpdatedAfterRefinementEqualFreshRows) {
+  // Rows computed before a refinement, updated for the changed elements only, must equal rows
+  // computed from scratch on the refined mesh (same streams per receiver and shooter).
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                    {0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2},
+                                    {-5, -5, 1}, {0.5, -5, 1}, {0.5, 5, 1}, {-5, 5, 1}};
+  PatchMesh mesh = meshed(p, {{{0, 1, 2, 3}, 0}, {{4, 7, 6, 5}, 1}, {{8, 11, 10, 9}, 2}}, 0.5, 0.1);
+  RayCaster rays(mesh);
+  AnalyticPatchShots updated(mesh, rays, {3, 8, 1});
+  for (int s = 0; s < mesh.shooterCount(); ++s) updated.powerFractions(s);
+  const int before = mesh.elementCount();
+  std::vector<std::array<int, 3>> corners(before);
+  for (int e = 0; e < before; ++e) corners[e] = mesh.cornerVertices(e);
+  for (int e = 0; e < before; e += 3) mesh.bisect(e);
+  std::vector<int> changed;
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    if (e >= before || mesh.cornerVertices(e) != corners[e]) changed.push_back(e);
+  ASSERT_GT(mesh.elementCount(), before);
+  ASSERT_LT(changed.size(), static_cast<size_t>(mesh.elementCount()));
+  updated.meshChanged(changed);
+  AnalyticPatchShots fresh(mesh, rays, {3, 8, 1});
+  for (int s = 0; s < mesh.shooterCount(); ++s) {
+    const FormFactorRow& a = updated.powerFractions(s);
+    const FormFactorRow& b = fresh.powerFractions(s);
+    ASSERT_EQ(a.targets, b.targets) << "shooter " << s;
+    for (size_t k = 0; k < a.values.size(); ++k) EXPECT_NEAR(a.values[k], b.values[k], 1e-14);
+  }
+}
+
 TEST(AnalyticPatchShots, BackToBackPairsGetNoRays) {
   // Two squares facing away from each other: no energy, and not a single ray spent.
   const PatchMesh mesh = meshed({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
