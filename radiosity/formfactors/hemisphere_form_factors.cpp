@@ -72,6 +72,28 @@ struct AssemblyScratch {
 };
 thread_local AssemblyScratch t_scratch;
 
+// Buffers for a row's per-ray arrays, reused across rows without allocating. A thread that waits
+// inside a row's parallel loop may start another row (TBB work stealing), so buffers are taken
+// from and returned to the thread's stack of free ones rather than owned by the thread.
+class RowBuffer {
+ public:
+  RowBuffer() {
+    if (!free_.empty()) {
+      data_ = std::move(free_.back());
+      free_.pop_back();
+    }
+  }
+  ~RowBuffer() { free_.push_back(std::move(data_)); }
+  RowBuffer(const RowBuffer&) = delete;
+  RowBuffer& operator=(const RowBuffer&) = delete;
+  std::vector<int>& get() { return data_; }
+
+ private:
+  std::vector<int> data_;
+  static thread_local std::vector<std::vector<int>> free_;
+};
+thread_local std::vector<std::vector<int>> RowBuffer::free_;
+
 }  // namespace
 
 HemisphereFormFactors::RowSampler::RowSampler(const HemisphereFormFactors& owner, int element,
@@ -96,7 +118,8 @@ void HemisphereFormFactors::RowSampler::ray(int k, Eigen::Vector3d& origin, Eige
   twoUniforms(splitMix(key_, 2 * static_cast<uint64_t>(k) + 1), s2, s3);
   if (k < grid_ * grid_) {
     const int p = positionCell_[k];
-    const int ky = k / grid_, py = p / grid_;
+    // k / grid without an integer division: (k + 0.5) / grid is never within rounding of an integer.
+    const int ky = static_cast<int>((k + 0.5) * inverseGrid_), py = static_cast<int>((p + 0.5) * inverseGrid_);
     s0 = ((k - ky * grid_) + s0) * inverseGrid_;  // direction stratum k
     s1 = (ky + s1) * inverseGrid_;
     s2 = ((p - py * grid_) + s2) * inverseGrid_;  // shuffled position stratum
@@ -128,10 +151,11 @@ std::vector<RowRay> HemisphereFormFactors::traceRow(int element) const {
 }
 
 FormFactorRow HemisphereFormFactors::computeRow(int element) const {
-  std::vector<int> cells;
-  const RowSampler sampler(*this, element, cells);
+  RowBuffer cells, hits;
+  const RowSampler sampler(*this, element, cells.get());
   const int n = sampler.count();
-  std::vector<int> firstHit(n, -1);  // each ray writes only its own entry
+  std::vector<int>& firstHit = hits.get();
+  firstHit.assign(n, -1);  // each ray writes only its own entry
   const bool extended = !options_.specular.empty();
   std::vector<Rgb> weight(extended ? n : 0);
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 64), [&](const tbb::blocked_range<int>& range) {
