@@ -22,42 +22,49 @@ class MaxPowerTree {
     n_ = n;
     leaves_ = 1;
     while (leaves_ < n) leaves_ *= 2;
-    best_.assign(2 * leaves_, kNone);
-    sum_.assign(2 * leaves_, 0.0);
-    key_.assign(leaves_, 0.0);
-    for (size_t i = 0; i < n; ++i) best_[leaves_ + i] = static_cast<int>(i);
+    nodes_.assign(2 * leaves_, Node{});
+    for (size_t i = 0; i < n; ++i) nodes_[leaves_ + i].index = static_cast<int>(i);
     for (size_t node = leaves_ - 1; node >= 1; --node) pull(node);
   }
 
   size_t size() const { return n_; }
-  double key(size_t i) const { return key_[i]; }
+  double key(size_t i) const { return nodes_[leaves_ + i].key; }
 
   void set(size_t i, double key) {
-    key_[i] = key;
-    sum_[leaves_ + i] = key;
+    Node& leaf = nodes_[leaves_ + i];
+    leaf.key = key;
+    leaf.sum = key;
     for (size_t node = (leaves_ + i) / 2; node >= 1; node /= 2) pull(node);
   }
 
   // Index of the largest key (lowest index among equals); -1 when every key is 0 (or n is 0).
   int argmax() const {
-    const int i = best_[1];
-    return (i != kNone && key_[i] > 0) ? i : -1;
+    const Node& root = nodes_[1];
+    return (root.index >= 0 && root.key > 0) ? root.index : -1;
   }
-  double total() const { return n_ == 0 ? 0.0 : sum_[1]; }
+  double total() const { return n_ == 0 ? 0.0 : nodes_[1].sum; }
 
  private:
-  static constexpr int kNone = -1;
+  // Each node keeps its winner's key beside its index, so updating a path reads only the two
+  // children (adjacent in memory), never the leaves.
+  struct Node {
+    double key = 0;  // the largest key below (leaf: its key)
+    double sum = 0;  // the sum of the keys below
+    int index = -1;  // where the largest key is; -1 below padding only
+  };
   void pull(size_t node) {
-    const int l = best_[2 * node], r = best_[2 * node + 1];
+    const Node& l = nodes_[2 * node];
+    const Node& r = nodes_[2 * node + 1];
+    Node& p = nodes_[node];
     // The left child holds the lower indices: it wins ties.
-    best_[node] = (r != kNone && (l == kNone || key_[r] > key_[l])) ? r : l;
-    sum_[node] = sum_[2 * node] + sum_[2 * node + 1];
+    const bool right = r.index >= 0 && (l.index < 0 || r.key > l.key);
+    p.key = right ? r.key : l.key;
+    p.index = right ? r.index : l.index;
+    p.sum = l.sum + r.sum;
   }
 
   size_t n_ = 0, leaves_ = 1;
-  std::vector<int> best_;     // per node: index of the largest key below it
-  std::vector<double> sum_;   // per node: sum of the keys below it
-  std::vector<double> key_;   // per leaf
+  std::vector<Node> nodes_;  // implicit binary tree: root 1, children 2k and 2k+1, leaves from leaves_
 };
 
 }  // namespace rad
