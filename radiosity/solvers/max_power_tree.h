@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -23,6 +24,7 @@ class MaxPowerTree {
     leaves_ = 1;
     while (leaves_ < n) leaves_ *= 2;
     nodes_.assign(2 * leaves_, Node{});
+    pending_.clear();
     for (size_t i = 0; i < n; ++i) nodes_[leaves_ + i].index = static_cast<int>(i);
     for (size_t node = leaves_ - 1; node >= 1; --node) pull(node);
   }
@@ -35,6 +37,32 @@ class MaxPowerTree {
     leaf.key = key;
     leaf.sum = key;
     for (size_t node = (leaves_ + i) / 2; node >= 1; node /= 2) pull(node);
+  }
+
+  // A batch of changes: setLater() changes keys without touching the tree, update() then
+  // recomputes each ancestor of the changed leaves once, level by level. Cheaper than set() per key
+  // when a shot changes hundreds of keys: the paths share their upper nodes, and the pulls of one
+  // level do not wait on each other.
+  void setLater(size_t i, double key) {
+    Node& leaf = nodes_[leaves_ + i];
+    leaf.key = key;
+    leaf.sum = key;
+    pending_.push_back(leaves_ + i);
+  }
+  void update() {
+    std::sort(pending_.begin(), pending_.end());
+    pending_.erase(std::unique(pending_.begin(), pending_.end()), pending_.end());
+    // Parents of a sorted level come out sorted, duplicates side by side.
+    while (!pending_.empty() && pending_.front() > 1) {
+      size_t out = 0;
+      for (size_t node : pending_) {
+        const size_t parent = node / 2;
+        if (out == 0 || pending_[out - 1] != parent) pending_[out++] = parent;
+      }
+      pending_.resize(out);
+      for (size_t node : pending_) pull(node);
+    }
+    pending_.clear();
   }
 
   // Index of the largest key (lowest index among equals); -1 when every key is 0 (or n is 0).
@@ -65,6 +93,7 @@ class MaxPowerTree {
 
   size_t n_ = 0, leaves_ = 1;
   std::vector<Node> nodes_;  // implicit binary tree: root 1, children 2k and 2k+1, leaves from leaves_
+  std::vector<size_t> pending_;  // changed by setLater(), not yet updated
 };
 
 }  // namespace rad

@@ -39,7 +39,7 @@ void ProgressiveSolver::step() {
   const int shooter = nextShooter_;
   const Rgb power = unshot_[shooter];
   unshot_[shooter] = Rgb();
-  selection_.set(shooter, 0.0);
+  selection_.setLater(shooter, 0.0);
   shot_[shooter] += power / shots_.shooterArea(shooter);
   const FormFactorRow& row = shots_.powerFractions(shooter);
   for (size_t k = 0; k < row.targets.size(); ++k) {
@@ -51,8 +51,9 @@ void ProgressiveSolver::step() {
     const int receiver = shots_.shooterOf(j);
     unshot_[receiver] += reflected;
     received_[receiver] += reflected;
-    selection_.set(receiver, powerKey(unshot_[receiver]));
+    selection_.setLater(receiver, powerKey(unshot_[receiver]));
   }
+  selection_.update();
   lastShooter_ = shooter;
   ++shotCount_;
   refreshSelection();

@@ -42,6 +42,13 @@ TEST(MaxPowerTree, AgreesWithLinearScanUnderRandomUpdates) {
       const double key = (rng() % 4 == 0) ? 0.0 : static_cast<double>(rng() % 8) * 0.125;
       keys[i] = key;
       tree.set(i, key);
+      // A batch of deferred changes too (duplicates included), as a shot makes them.
+      for (int b = 0; b < 3; ++b) {
+        const size_t j = rng() % n;
+        keys[j] = static_cast<double>(rng() % 8) * 0.125;
+        tree.setLater(j, keys[j]);
+      }
+      tree.update();
       ASSERT_EQ(tree.argmax(), scanArgmax(keys)) << "n " << n << " step " << step;
       double sum = 0;
       for (double k : keys) sum += k;
