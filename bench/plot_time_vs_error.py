@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Plots run time against error from bench/time_vs_error's CSVs: one log-log PNG per scene, wall
 time on x, relative RMS radiance error on y, each configuration a point (marker: form-factor
-method and meshing, colour: solver), the Pareto front (no other point is both faster and more
+method and meshing, colour: solver, label: element count; black edge: not converged), the Pareto front (no other point is both faster and more
 accurate) drawn as a step line, and the reference's own noise as a dotted line (errors near it
 are not resolved). Also writes the front of each scene to DIR/pareto_NAME.csv.
 
@@ -53,11 +53,13 @@ def plot(name, rows, out_dir):
     ray_kinds = sorted({kind(r) for r in rows if r["form_factors"] == "hemisphere"},
                        key=lambda k: int(k.split()[1]))
     markers = dict(MARKERS, **{k: RAY_MARKERS[i % len(RAY_MARKERS)] for i, k in enumerate(ray_kinds)})
-    fig, ax = plt.subplots(figsize=(8, 5.5), dpi=110)
+    fig, ax = plt.subplots(figsize=(9.5, 5.5), dpi=110)
     for r in rows:
         ax.scatter(r["seconds"], r["relative_rmse"], marker=markers[kind(r)], s=36,
                    color=COLOURS.get(r["solver"], "black"), alpha=0.85,
                    edgecolors="black" if r["converged"] == "0" else "none")
+        ax.annotate(r["elements"], (r["seconds"], r["relative_rmse"]), textcoords="offset points", xytext=(4, 3),
+                    fontsize=6, color="#555555")
     front = pareto(rows)
     ax.step([r["seconds"] for r in front], [r["relative_rmse"] for r in front], where="post", color="black",
             linewidth=1.2, label="Pareto front")
@@ -71,7 +73,7 @@ def plot(name, rows, out_dir):
                 for k in ray_kinds + [k for k in MARKERS if any(kind(r) == k for r in rows)]]
     handles += [plt.Line2D([], [], marker="o", linestyle="", color=c, label=s) for s, c in COLOURS.items()
                 if any(r["solver"] == s for r in rows)]
-    ax.legend(handles=handles, fontsize=8, loc="upper right")
+    ax.legend(handles=handles, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("wall time of the solve (s, 2 threads unless stated)")
