@@ -1,8 +1,8 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Cost growth with scene size: solves the generated room (bench/scene_generator.py) at element
 counts from 1e3 to 1e5, and records the form-factor and solve times (summary.json) and the peak
 resident memory of the process (/usr/bin/time). Fits time = c · N^k by least squares in log–log
-and writes CSV and an SVG plot.
+and writes CSV and a PNG plot (matplotlib: Debian's /usr/bin/python3 with python3-matplotlib).
 
     python3 bench/growth.py [--build build] [--out bench/results] [--sizes 1000,3000,...] [--threads 0]
 """
@@ -27,35 +27,35 @@ def fit_exponent(xs, ys):
     return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sxx if sxx > 0 else float("nan")
 
 
-def svg_loglog(path, title, series, xlabel, ylabel):
-    """Minimal log–log line plot: series = [(label, colour, [(x, y)])]."""
-    w, h, m = 640, 420, 60
-    pts = [p for _, _, s in series for p in s if p[1] > 0]
-    x0, x1 = math.log10(min(p[0] for p in pts)), math.log10(max(p[0] for p in pts))
-    y0, y1 = math.floor(math.log10(min(p[1] for p in pts))), math.ceil(math.log10(max(p[1] for p in pts)))
-    x0, x1 = math.floor(x0), math.ceil(x1)
-    X = lambda x: m + (math.log10(x) - x0) / max(x1 - x0, 1e-9) * (w - 2 * m)
-    Y = lambda y: h - m - (math.log10(y) - y0) / max(y1 - y0, 1e-9) * (h - 2 * m)
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="12">',
-           f'<rect width="{w}" height="{h}" fill="white"/>',
-           f'<text x="{w / 2}" y="20" text-anchor="middle" font-size="14">{title}</text>',
-           f'<text x="{w / 2}" y="{h - 15}" text-anchor="middle">{xlabel}</text>',
-           f'<text x="15" y="{h / 2}" text-anchor="middle" transform="rotate(-90 15 {h / 2})">{ylabel}</text>']
-    for d in range(x0, x1 + 1):
-        out.append(f'<line x1="{X(10 ** d)}" y1="{m}" x2="{X(10 ** d)}" y2="{h - m}" stroke="#ddd"/>'
-                   f'<text x="{X(10 ** d)}" y="{h - m + 15}" text-anchor="middle">1e{d}</text>')
-    for d in range(y0, y1 + 1):
-        out.append(f'<line x1="{m}" y1="{Y(10 ** d)}" x2="{w - m}" y2="{Y(10 ** d)}" stroke="#ddd"/>'
-                   f'<text x="{m - 5}" y="{Y(10 ** d) + 4}" text-anchor="end">1e{d}</text>')
-    for k, (label, colour, s) in enumerate(series):
-        s = [p for p in s if p[1] > 0]
-        out.append('<polyline fill="none" stroke="%s" stroke-width="2" points="%s"/>' %
-                   (colour, " ".join(f"{X(x):.1f},{Y(y):.1f}" for x, y in s)))
-        out += [f'<circle cx="{X(x):.1f}" cy="{Y(y):.1f}" r="3" fill="{colour}"/>' for x, y in s]
-        out.append(f'<text x="{m + 10}" y="{m + 15 + 16 * k}" fill="{colour}">{label}</text>')
-    out.append("</svg>")
-    with open(path, "w") as f:
-        f.write("\n".join(out))
+def plot_png(path, rows, fits):
+    """Time (form factors, solve) and peak memory against N, log-log, with the fitted exponents."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    n = [r["elements"] for r in rows]
+    fig, ax = plt.subplots(figsize=(7.5, 5), dpi=110)
+    for key, label, colour in (("form_factor_s", "form factors (s)", "#1f77b4"), ("solve_s", "solve (s)", "#d62728"),
+                               ("total_s", "total (s)", "#7f7f7f")):
+        ax.plot(n, [r[key] for r in rows], "o-", color=colour, label="%s, k = %.2f" % (label, fits[key]))
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("elements N")
+    ax.set_ylabel("seconds")
+    ax.grid(True, which="both", alpha=0.3)
+    mem = ax.twinx()
+    mem.plot(n, [r["peak_mib"] for r in rows], "s--", color="#2ca02c",
+             label="peak memory (MiB), k = %.2f" % fits["peak_mib"])
+    mem.set_yscale("log")
+    mem.set_ylabel("peak resident memory (MiB)")
+    lines = ax.get_legend_handles_labels()
+    more = mem.get_legend_handles_labels()
+    ax.legend(lines[0] + more[0], lines[1] + more[1], loc="upper left", fontsize=8)
+    ax.set_title("Cost against element count (generated room, %d rays, %d threads)" % (rows[0]["rays_per_element"],
+                                                                                       rows[0]["threads"]))
+    fig.tight_layout()
+    tmp = path + ".tmp"
+    fig.savefig(tmp, format="png")
+    os.replace(tmp, path)
 
 
 def main():
@@ -86,27 +86,32 @@ def main():
             row = {"target_elements": n, "elements": s["scene"]["elements"],
                    "form_factor_s": s["time_seconds"]["form_factors"], "solve_s": s["time_seconds"]["solve"],
                    "total_s": s["time_seconds"]["total"], "peak_mib": peak_kib / 1024,
-                   "rays": s["form_factors"]["rays_cast"], "shots": s["solver"]["iterations"],
+                   "rays_per_element": args.rays, "rays": s["form_factors"]["rays_cast"], "shots": s["solver"]["iterations"],
                    "threads": s["threads"]}
             print(row, flush=True)
             rows.append(row)
-    with open(os.path.join(args.out, "growth.csv"), "w", newline="") as f:
+    tmp = os.path.join(args.out, "growth.csv.tmp")
+    with open(tmp, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
+    os.replace(tmp, os.path.join(args.out, "growth.csv"))
     n = [r["elements"] for r in rows]
-    fits = {k: fit_exponent(n, [r[k] for r in rows]) for k in ("form_factor_s", "solve_s", "total_s", "peak_mib")}
-    with open(os.path.join(args.out, "growth_fit.json"), "w") as f:
-        json.dump(fits, f, indent=2)
-    print("fitted exponents (quantity ~ N^k):", {k: round(v, 2) for k, v in fits.items()})
-    svg_loglog(os.path.join(args.out, "growth.svg"), "Cost against element count (generated room)",
-               [(f"form factors (k = {fits['form_factor_s']:.2f})", "#1f77b4",
-                 [(x, r["form_factor_s"]) for x, r in zip(n, rows)]),
-                (f"solve (k = {fits['solve_s']:.2f})", "#d62728", [(x, r["solve_s"]) for x, r in zip(n, rows)]),
-                (f"peak memory MiB (k = {fits['peak_mib']:.2f})", "#2ca02c",
-                 [(x, r["peak_mib"]) for x, r in zip(n, rows)])],
-               "elements", "seconds / MiB")
-
+    keys = ("form_factor_s", "solve_s", "total_s", "peak_mib")
+    fits = {k: fit_exponent(n, [r[k] for r in rows]) for k in keys}
+    # Over the largest sizes only: fixed costs (process start, libraries, thread pools) hide the
+    # growth at small N, memory most of all.
+    large = [r for r in rows if r["elements"] >= 1e4]
+    fits_large = ({k: fit_exponent([r["elements"] for r in large], [r[k] for r in large]) for k in keys}
+                  if len(large) >= 2 else {})
+    tmp = os.path.join(args.out, "growth_fit.json.tmp")
+    with open(tmp, "w") as f:
+        json.dump({"all_sizes": fits, "n_at_least_1e4": fits_large}, f, indent=2)
+    os.replace(tmp, os.path.join(args.out, "growth_fit.json"))
+    print("fitted exponents (quantity ~ N^k), all sizes:", {k: round(v, 2) for k, v in fits.items()})
+    if fits_large:
+        print("fitted exponents, N >= 1e4:", {k: round(v, 2) for k, v in fits_large.items()})
+    plot_png(os.path.join(args.out, "growth.png"), rows, fits)
 
 if __name__ == "__main__":
     main()

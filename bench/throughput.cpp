@@ -1,8 +1,10 @@
 // Ray throughput of the form-factor rows against raw Embree on the same scene, the same rays
 // and the same thread count (issue 8). The rows' rays are traced once up front (traceRow gives
 // each ray's origin and direction); the raw benchmark casts exactly those rays with
-// rtcIntersect1 on a plain Embree scene of the same triangles, so the ratio of the two rates is
-// what the form-factor code (sampling, hit bookkeeping, row assembly) costs on top of Embree.
+// rtcIntersect1 on a plain Embree scene of the same triangles built with the same settings as
+// RayCaster's (robust, high quality), so the ratio of the two rates is what the form-factor code
+// (sampling, hit bookkeeping, row assembly) costs on top of Embree. rawEmbreeDefaultBuild shows
+// what Embree's faster, non-robust default build would give on the same rays.
 //   throughput [--benchmark_format=json]   (scene: RADIOSITY_BENCH_SCENE, default Cornell box)
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
@@ -32,7 +34,8 @@ struct Setup {
   std::unique_ptr<HemisphereFormFactors> method;
   std::vector<RTCRayHit> rays;  // the rows' rays, in scene coordinates (float)
   RTCDevice device = nullptr;
-  RTCScene raw = nullptr;
+  RTCScene raw = nullptr;         // built as RayCaster builds its BVH (robust, high quality)
+  RTCScene rawDefault = nullptr;  // Embree's default build: what robustness costs, for the record
 
   Setup() {
     setLogLevel(LogLevel::Quiet);
@@ -45,6 +48,7 @@ struct Setup {
     // No emitter multipliers: every row has the same ray count, so the rates compare like for like.
     method = std::make_unique<HemisphereFormFactors>(*mesh, *caster,
                                                      HemisphereOptions{kRaysPerElement, 1});
+    rays.reserve(size_t(mesh->elementCount()) * kRaysPerElement);
     for (int e = 0; e < mesh->elementCount(); ++e)
       for (const RowRay& r : method->traceRow(e)) {
         RTCRayHit h{};
@@ -57,7 +61,14 @@ struct Setup {
         rays.push_back(h);
       }
     device = rtcNewDevice(nullptr);
-    raw = rtcNewScene(device);
+    raw = plainScene(RTC_SCENE_FLAG_ROBUST, RTC_BUILD_QUALITY_HIGH);
+    rawDefault = plainScene(RTC_SCENE_FLAG_NONE, RTC_BUILD_QUALITY_MEDIUM);
+  }
+  // The elements' triangles as a plain Embree scene, with the given flags.
+  RTCScene plainScene(RTCSceneFlags flags, RTCBuildQuality quality) {
+    RTCScene scene = rtcNewScene(device);
+    rtcSetSceneFlags(scene, flags);
+    rtcSetSceneBuildQuality(scene, quality);
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     const int n = mesh->elementCount();
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
@@ -72,12 +83,14 @@ struct Setup {
       }
     }
     rtcCommitGeometry(g);
-    rtcAttachGeometry(raw, g);
+    rtcAttachGeometry(scene, g);
     rtcReleaseGeometry(g);
-    rtcCommitScene(raw);
+    rtcCommitScene(scene);
+    return scene;
   }
   ~Setup() {
     rtcReleaseScene(raw);
+    rtcReleaseScene(rawDefault);
     rtcReleaseDevice(device);
   }
 };
@@ -101,7 +114,8 @@ void formFactorRows(benchmark::State& state) {
   state.counters["elements"] = s.mesh->elementCount();
 }
 
-void rawEmbree(benchmark::State& state) {
+// Casts exactly the rows' rays with rtcIntersect1 (incoherent context, as RayCaster uses).
+void castRaw(benchmark::State& state, RTCScene scene) {
   Setup& s = setup();
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(0));
   uint64_t rays = 0;
@@ -110,6 +124,7 @@ void rawEmbree(benchmark::State& state) {
                       [&](const tbb::blocked_range<size_t>& r) {
                         RTCIntersectContext context;
                         rtcInitIntersectContext(&context);
+                        context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
                         for (size_t k = r.begin(); k != r.end(); ++k) {
                           RTCRayHit h = s.rays[k];
                           h.ray.tnear = 0;
@@ -117,7 +132,7 @@ void rawEmbree(benchmark::State& state) {
                           h.ray.mask = ~0u;
                           h.ray.flags = 0;
                           h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                          rtcIntersect1(s.raw, &context, &h);
+                          rtcIntersect1(scene, &context, &h);
                           benchmark::DoNotOptimize(h.hit.primID);
                         }
                       });
@@ -125,6 +140,12 @@ void rawEmbree(benchmark::State& state) {
   }
   state.counters["rays_per_s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
 }
+
+// The baseline of the ratio: the same BVH settings as the form factors' RayCaster.
+void rawEmbree(benchmark::State& state) { castRaw(state, setup().raw); }
+// Embree's default (non-robust, medium-quality) build, reported beside it: not a like-for-like
+// baseline (robust traversal is what keeps rays from slipping through shared edges).
+void rawEmbreeDefaultBuild(benchmark::State& state) { castRaw(state, setup().rawDefault); }
 
 // 1, 2, 4, … up to the machine's hardware threads, so the same binary measures scaling anywhere.
 void threadCounts(benchmark::internal::Benchmark* b) {
@@ -139,6 +160,11 @@ BENCHMARK(formFactorRows)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(rawEmbree)
+    ->Apply(threadCounts)
+    ->ArgName("threads")
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(rawEmbreeDefaultBuild)
     ->Apply(threadCounts)
     ->ArgName("threads")
     ->UseRealTime()

@@ -5,6 +5,7 @@
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/formfactors/form_factor_row.h"
+#include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/specular_paths.h"
 #include "radiosity/visibility/ray_caster.h"
 
@@ -33,7 +34,9 @@ struct HemisphereOptions {
 // rays leave uniformly distributed points on element i with cosine-weighted directions, and
 // F_ij = (rays whose first hit is the front of j) / (rays cast). Origins and directions are
 // stratified (a jittered grid over directions, paired with a shuffled jittered grid over the
-// element) to lower the variance without bias.
+// element) to lower the variance without bias. Rows are assembled from hit counts in a dense
+// per-thread array (no sort of the rays, no allocation per ray): the work on top of the ray
+// casts stays small next to them (bench/throughput).
 //
 // Extended form factors: a ray whose first hit is a mirror or glass continues (see
 // traceThroughSpecular) to the diffuse element it finally reaches, carrying the specular
@@ -58,11 +61,29 @@ class HemisphereFormFactors {
   uint64_t specularRays() const { return extraRays_.load(); }
 
  private:
-  // The row's stratified samples (two for the direction, two for the point on the element),
-  // drawn serially from the row's own random stream.
-  std::vector<std::array<double, 4>> rowSamples(int element) const;
-  RowRay castSample(int element, const std::array<Eigen::Vector3d, 3>& corners,
-                    const std::array<double, 4>& sample) const;
+  // The rays of one row. Their random numbers come from a counter-based generator keyed by the
+  // row's own stream, so ray k is the same on any thread; only the shuffle that pairs direction
+  // strata with position strata is drawn serially, once per row.
+  class RowSampler {
+   public:
+    RowSampler(const HemisphereFormFactors& owner, int element, std::vector<int>& positionCell);
+    int count() const { return count_; }
+    void ray(int k, Eigen::Vector3d& origin, Eigen::Vector3d& direction) const;
+
+   private:
+    const HemisphereFormFactors& owner_;
+    int count_, grid_ = 0;
+    double inverseGrid_ = 0;
+    Frame frame_;
+    std::array<Eigen::Vector3d, 3> corners_;
+    std::vector<int>& positionCell_;
+    uint64_t key_ = 0;
+  };
+  // The element a ray from `element` counts for: the one whose front it hit first, or -1.
+  int frontHit(int element, const RayHit& hit, const Eigen::Vector3d& direction) const;
+  // Rows from each ray's first hit (-1: escaped): plain counts, or with each path's tint.
+  FormFactorRow assemble(const std::vector<int>& firstHit) const;
+  FormFactorRow assembleTinted(const std::vector<int>& firstHit, const std::vector<Rgb>& weight) const;
 
   const PatchMesh& mesh_;
   const RayCaster& rays_;

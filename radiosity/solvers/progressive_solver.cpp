@@ -17,22 +17,21 @@ ProgressiveSolver::ProgressiveSolver(const RadiosityProblem& problem, ShotRows& 
   updateUnshotTotals();
 }
 
+double ProgressiveSolver::powerKey(const Rgb& unshot) {
+  // Magnitudes: after refinement a shooter may owe negative power (light to take back).
+  return std::fabs(unshot.r) + std::fabs(unshot.g) + std::fabs(unshot.b);
+}
+
 void ProgressiveSolver::updateUnshotTotals() {
-  // One pass finds both the next shooter and the exact (compensated) unshot total, so the
-  // convergence measure never drifts from what is really left.
-  CompensatedSum total;
-  double best = 0;
-  nextShooter_ = -1;
-  for (int s = 0; s < static_cast<int>(unshot_.size()); ++s) {
-    // Magnitudes: after refinement a shooter may owe negative power (light to take back).
-    const double power = std::fabs(unshot_[s].r) + std::fabs(unshot_[s].g) + std::fabs(unshot_[s].b);
-    total += power;
-    if (power > best) {
-      best = power;
-      nextShooter_ = s;
-    }
-  }
-  unshotFraction_ = emittedPower_ > 0 ? total.value() / emittedPower_ : 0.0;
+  // Every key from scratch (at the start and after refinement): O(n), rare.
+  selection_.reset(unshot_.size());
+  for (size_t s = 0; s < unshot_.size(); ++s) selection_.set(s, powerKey(unshot_[s]));
+  refreshSelection();
+}
+
+void ProgressiveSolver::refreshSelection() {
+  nextShooter_ = selection_.argmax();
+  unshotFraction_ = emittedPower_ > 0 ? selection_.total() / emittedPower_ : 0.0;
 }
 
 void ProgressiveSolver::step() {
@@ -40,6 +39,7 @@ void ProgressiveSolver::step() {
   const int shooter = nextShooter_;
   const Rgb power = unshot_[shooter];
   unshot_[shooter] = Rgb();
+  selection_.setLater(shooter, 0.0);
   shot_[shooter] += power / shots_.shooterArea(shooter);
   const FormFactorRow& row = shots_.powerFractions(shooter);
   for (size_t k = 0; k < row.targets.size(); ++k) {
@@ -48,12 +48,15 @@ void ProgressiveSolver::step() {
     // unshot power of j's shooter.
     const Rgb reflected = problem_.reflectance[j] * power * row.factor(k);
     solution_[j] += reflected / problem_.area[j];
-    unshot_[shots_.shooterOf(j)] += reflected;
-    received_[shots_.shooterOf(j)] += reflected;
+    const int receiver = shots_.shooterOf(j);
+    unshot_[receiver] += reflected;
+    received_[receiver] += reflected;
+    selection_.setLater(receiver, powerKey(unshot_[receiver]));
   }
+  selection_.update();
   lastShooter_ = shooter;
   ++shotCount_;
-  updateUnshotTotals();
+  refreshSelection();
 }
 
 std::vector<Rgb> ProgressiveSolver::withAmbient() const {

@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "radiosity/formfactors/shot_rows.h"
+#include "radiosity/solvers/max_power_tree.h"
 #include "radiosity/solvers/radiosity_problem.h"
 #include "radiosity/solvers/solver.h"
 
@@ -46,7 +47,11 @@ class ProgressiveSolver : public Solver {
   void setName(std::string name) { name_ = std::move(name); }
 
  private:
+  // Rebuilds the selection from every shooter's unshot power (start, refinement).
   void updateUnshotTotals();
+  // Next shooter and unshot fraction from the selection tree, after keys changed.
+  void refreshSelection();
+  static double powerKey(const Rgb& unshot);
   const RadiosityProblem& problem_;
   ShotRows& shots_;
   std::string name_ = "progressive";
@@ -54,6 +59,9 @@ class ProgressiveSolver : public Solver {
   std::vector<Rgb> unshot_;  // per shooter, W
   std::vector<Rgb> shot_;    // per shooter: radiosity shot so far, W/m²
   std::vector<Rgb> received_;  // per shooter: reflected power its elements received so far, W
+  // Largest unshot power and the total in O(log shooters) per change, instead of a scan of all
+  // shooters per shot (which made shooting O(n²)); same shooter order as the scan.
+  MaxPowerTree selection_;
   int shotCount_ = 0;
   int lastShooter_ = -1;
   int nextShooter_ = -1;
