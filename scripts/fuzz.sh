@@ -32,6 +32,8 @@ if [ ${#targets[@]} -eq 0 ]; then
 fi
 cmake --build "$build" -j"${JOBS:-2}" --target $(printf 'fuzz_%s ' "${targets[@]}")
 
+# Third-party leaks (each with its reason) are suppressed; any other leak is a finding.
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
 status=0
 for t in "${targets[@]}"; do
   mkdir -p "$build/corpus/$t" "$build/artifacts/$t"

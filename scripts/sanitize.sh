@@ -28,7 +28,6 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${flags[@]}" >/dev/nul
 cmake --build "$build" -j"${JOBS:-2}"
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-supp=tests/sanitizer/lsan.supp
-[ -f "$supp" ] && export LSAN_OPTIONS="suppressions=$PWD/$supp:print_suppressions=0"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
 label="${LABEL-unit}"
 ctest --test-dir "$build" ${label:+-L "$label"} --output-on-failure -j2

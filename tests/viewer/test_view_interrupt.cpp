@@ -69,9 +69,10 @@ TEST_F(ViewInterrupt, CtrlCDuringTheRunLeavesNoScreenshot) {
        "--screenshot", (dir / "shot.png").string(), "--size", "256x256", "--no-chart", "--quiet"},
       err.string());
   ASSERT_TRUE(child.started());
-  // Past start-up (loading VTK's libraries takes a while on a busy machine; before the handlers
-  // are installed, Ctrl-C simply kills the process), into the form-factor pass.
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  // Past start-up (before the handlers are installed Ctrl-C simply kills the process; loading
+  // VTK takes a while on a busy machine), into the form-factor pass.
+  ASSERT_TRUE(child.waitForHandler(SIGINT, 30.0)) << "no SIGINT handler installed";
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ASSERT_TRUE(child.running()) << "the run ended before the signal; make it longer";
   const auto sent = std::chrono::steady_clock::now();
   child.signal(SIGINT);
