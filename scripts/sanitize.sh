@@ -4,9 +4,11 @@
 # fails the run.
 #   bash scripts/sanitize.sh          # GCC
 #   bash scripts/sanitize.sh --fuzz   # clang, with the libFuzzer targets in the same build, so
-#                                     # FUZZ_BUILD=build-asan bash scripts/fuzz.sh reuses it (CI)
+#                                     # scripts/fuzz.sh can reuse it (.ci/run: ASAN_BUILD=build-fuzz)
 # Environment: ASAN_BUILD (default build-asan), JOBS (build jobs, 2), LABEL (ctest label,
-# default unit; "" runs everything).
+# default unit; "" runs everything). ccache is used where it is installed (CCACHE_DISABLE=1
+# turns it off). LeakSanitizer reports of third-party libraries are suppressed by
+# tests/sanitizer/lsan.supp (each entry says why); the project's own leaks are not.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${ASAN_BUILD:-build-asan}"
@@ -18,10 +20,14 @@ else
   bash scripts/setup.sh
   flags=(-DRADIOSITY_SANITIZE=ON)
 fi
+if command -v ccache >/dev/null 2>&1; then
+  flags+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
 # The compiler is fixed when a build directory is first configured: one directory per choice.
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${flags[@]}" -DRADIOSITY_VIEWER=OFF >/dev/null
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRADIOSITY_TESTS=ON "${flags[@]}" >/dev/null
 cmake --build "$build" -j"${JOBS:-2}"
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
 label="${LABEL-unit}"
 ctest --test-dir "$build" ${label:+-L "$label"} --output-on-failure -j2

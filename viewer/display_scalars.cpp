@@ -108,8 +108,10 @@ vtkSmartPointer<vtkScalarsToColors> scalarColours(DisplayScalar scalar,
     return lut;
   }
   if (scalar == DisplayScalar::Patch || scalar == DisplayScalar::Level) {
-    // One colour per integer value; golden-ratio hue steps keep neighbouring ids apart.
-    const int count = static_cast<int>(std::lround(hi - lo)) + 1;
+    // One colour per integer value; golden-ratio hue steps keep neighbouring ids apart. The table
+    // is capped (ids past it share its last colour): a file's ids must not decide its size.
+    constexpr double maxColours = 65536;
+    const int count = static_cast<int>(std::lround(std::min(hi - lo, maxColours - 1))) + 1;
     auto lut = vtkSmartPointer<vtkLookupTable>::New();
     lut->SetNumberOfTableValues(count);
     lut->SetRange(lo - 0.5, lo + count - 0.5);

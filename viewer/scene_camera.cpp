@@ -35,7 +35,8 @@ std::optional<CameraSpec> readCameraSidecar(const std::string& scenePath) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error, and out_of_range for a number too large for a double (e.g. 1e400).
     throw InputError(path, 0, std::string("malformed JSON: ") + e.what());
   }
   if (!j.is_object()) throw InputError(path, 0, "expected a JSON object");

@@ -32,6 +32,7 @@
 
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "viewer/convergence_chart.h"
 #include "viewer/solution_polydata.h"
@@ -498,6 +499,10 @@ void SolutionViewer::screenshot(const std::string& pngPath) {
   png->Write();
   vtkUnsignedCharArray* bytes = png->GetResult();
   if (!bytes || bytes->GetNumberOfValues() == 0) throw RuntimeFailure("VTK produced no PNG data");
+  // As solve/render/bake: a pending interrupt writes nothing; one arriving from here on waits
+  // until the PNG has its final name.
+  throwIfInterrupted();
+  OutputSection writing;
   AtomicFile file(pngPath, /*binary=*/true);
   file.stream().write(reinterpret_cast<const char*>(bytes->GetPointer(0)),
                       bytes->GetNumberOfValues());

@@ -1,5 +1,6 @@
 #include "viewer/solution_vtp.h"
 
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellTypes.h>
 #include <vtkFieldData.h>
@@ -8,7 +9,10 @@
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
+#include <string>
 
 #include "radiosity/core/errors.h"
 #include "viewer/solution_polydata.h"
@@ -37,6 +41,64 @@ void writeSolutionVtp(std::ostream& out, vtkPolyData* solution) {
   const std::string& bytes = writer->GetOutputString();
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
+
+namespace {
+
+// VTK's reader checks the XML, not what the numbers mean: a hostile file could name points that
+// do not exist (the viewer would index past its arrays), or hold NaN, negative areas or ids that
+// are not ints. What the viewer relies on is checked here.
+void checkSolutionValues(const std::string& path, vtkPolyData* data) {
+  const vtkIdType points = data->GetNumberOfPoints(), cells = data->GetNumberOfCells();
+  for (vtkIdType p = 0; p < points; ++p) {
+    double x[3];
+    data->GetPoint(p, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      throw InputError(path, 0, "point " + std::to_string(p) + " is not finite");
+  }
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  vtkCellArray* polys = data->GetPolys();
+  polys->InitTraversal();
+  for (vtkIdType cell = 0; polys->GetNextCell(n, ids); ++cell)
+    for (vtkIdType k = 0; k < n; ++k)
+      if (ids[k] < 0 || ids[k] >= points)
+        throw InputError(path, 0,
+                         "triangle " + std::to_string(cell) + " names point " +
+                             std::to_string(ids[k]) + " of " + std::to_string(points));
+  for (const char* name : {solution_array::radiosity, solution_array::radiance,
+                           solution_array::unshot, solution_array::area}) {
+    const bool isArea = std::string(name) == solution_array::area;
+    vtkDataArray* a = data->GetCellData()->GetArray(name);
+    for (vtkIdType t = 0; t < a->GetNumberOfTuples(); ++t)
+      for (int c = 0; c < a->GetNumberOfComponents(); ++c) {
+        const double v = a->GetComponent(t, c);
+        if (!std::isfinite(v) || (isArea && v < 0))
+          throw InputError(path, 0,
+                           std::string("cell array '") + name + "' holds " + std::to_string(v) +
+                               " at cell " + std::to_string(t));
+      }
+  }
+  vtkDataArray* pointRadiance = data->GetPointData()->GetArray(solution_array::radiance);
+  for (vtkIdType t = 0; t < points; ++t)
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(pointRadiance->GetComponent(t, c)))
+        throw InputError(path, 0,
+                         "point array 'radiance' is not finite at point " + std::to_string(t));
+  // Ids and levels are ints in the solver; any array type may hold them in a file.
+  for (const char* name :
+       {solution_array::patch, solution_array::material, solution_array::level}) {
+    vtkDataArray* a = data->GetCellData()->GetArray(name);
+    for (vtkIdType t = 0; t < cells; ++t) {
+      const double v = a->GetComponent(t, 0);
+      if (!(v >= 0 && v <= std::numeric_limits<int>::max()) || v != std::floor(v))
+        throw InputError(path, 0,
+                         std::string("cell array '") + name + "' holds " + std::to_string(v) +
+                             " at cell " + std::to_string(t) + ": expected a whole number >= 0");
+    }
+  }
+}
+
+}  // namespace
 
 vtkSmartPointer<vtkPolyData> readSolutionVtp(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "no such file");
@@ -72,6 +134,7 @@ vtkSmartPointer<vtkPolyData> readSolutionVtp(const std::string& path) {
       throw InputError(path, 0, what + " has the wrong size");
   }
   if (data->GetPolys()->IsHomogeneous() != 3) throw InputError(path, 0, "expected triangles only");
+  checkSolutionValues(path, data);
   return data;
 }
 

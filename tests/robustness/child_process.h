@@ -74,6 +74,23 @@ class ChildProcess {
     return false;
   }
 
+  // Waits up to `seconds` until the process catches `sig` (its handler is installed: SigCgt in
+  // /proc/<pid>/status), so a test does not signal it while it is still starting up; returns
+  // whether it does.
+  bool waitForHandler(int sig, double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < end && running()) {
+      std::ifstream in("/proc/" + std::to_string(pid_) + "/status");
+      std::string line;
+      while (std::getline(in, line))
+        if (line.rfind("SigCgt:", 0) == 0 &&
+            (std::stoull(line.substr(7), nullptr, 16) >> (sig - 1) & 1))
+          return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return false;
+  }
+
  private:
   pid_t pid_ = -1;
   int status_ = 0;

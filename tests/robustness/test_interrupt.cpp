@@ -26,7 +26,7 @@ std::string readText(const std::filesystem::path& path) {
 struct InterruptCase {
   const char* name;
   int signal;
-  double after;                   // seconds before the signal
+  double after;                   // seconds between the handlers' installation and the signal
   std::vector<std::string> args;  // solve options making the run last several seconds
 };
 
@@ -42,6 +42,9 @@ TEST_P(Interrupt, StopsWithinASecondAndLeavesNothing) {
   argv.insert(argv.end(), c.args.begin(), c.args.end());
   testing::ChildProcess child(argv, err.string());
   ASSERT_TRUE(child.started());
+  // On a busy machine start-up alone can take longer than `after`: count from the handlers.
+  ASSERT_TRUE(child.waitForHandler(c.signal, 30.0)) << "no signal handler installed\n"
+                                                    << readText(err);
   std::this_thread::sleep_for(std::chrono::duration<double>(c.after));
   // The delay is meant to land mid-run; on a loaded machine the process may not even have
   // installed its handlers yet, so wait (up to 10 s) until it has.

@@ -4,10 +4,12 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -160,6 +162,48 @@ TEST_F(SolutionVtp, ReadBackByTheViewerChecksArrays) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(bad.string()), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("unshot"), std::string::npos) << e.what();
+  }
+}
+
+// What VTK's reader lets through but the viewer cannot use: each is refused naming the file and
+// what is wrong, where the viewer would otherwise index past its arrays or size tables by it.
+TEST_F(SolutionVtp, ReadBackRefusesValuesTheViewerCannotUse) {
+  struct Case {
+    const char* name;
+    const char* expected;  // in the message
+    void (*spoil)(vtkPolyData*);
+  };
+  const Case cases[] = {
+      {"point_out_of_range", "names point",
+       [](vtkPolyData* d) {
+         d->GetPolys()->GetConnectivityArray()->SetComponent(4, 0, d->GetNumberOfPoints());
+       }},
+      {"negative_point", "names point",
+       [](vtkPolyData* d) { d->GetPolys()->GetConnectivityArray()->SetComponent(0, 0, -1); }},
+      {"nan_radiosity", "'B'",
+       [](vtkPolyData* d) { d->GetCellData()->GetArray("B")->SetComponent(7, 1, std::nan("")); }},
+      {"negative_area", "'area'",
+       [](vtkPolyData* d) { d->GetCellData()->GetArray("area")->SetComponent(3, 0, -1e-3); }},
+      {"infinite_point", "not finite",
+       [](vtkPolyData* d) { d->GetPoints()->SetPoint(2, 0, HUGE_VAL, 0); }},
+      {"negative_patch", "'patch'",
+       [](vtkPolyData* d) { d->GetCellData()->GetArray("patch")->SetComponent(5, 0, -2); }},
+  };
+  for (const Case& c : cases) {
+    vtkSmartPointer<vtkPolyData> data = readSolutionVtp((*dir_ / "solution.vtp").string());
+    c.spoil(data);
+    const auto bad = *dir_ / (std::string(c.name) + ".vtp");
+    {
+      std::ofstream out(bad, std::ios::binary);
+      writeSolutionVtp(out, data);
+    }
+    try {
+      readSolutionVtp(bad.string());
+      ADD_FAILURE() << c.name << ": accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(bad.string()), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos) << e.what();
+    }
   }
 }
 
