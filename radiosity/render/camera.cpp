@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "radiosity/core/errors.h"
+#include "radiosity/render/json_file.h"
 
 namespace rad {
 namespace {
@@ -38,13 +39,6 @@ int readInt(const nlohmann::json& j, const std::string& key, const std::string& 
   return v.get<int>();
 }
 
-// nlohmann reports a byte offset; people want a line.
-int lineOfByte(const std::string& text, size_t byte) {
-  int line = 1;
-  for (size_t i = 0; i < std::min(byte, text.size()); ++i) line += text[i] == '\n';
-  return line;
-}
-
 }  // namespace
 
 void validateCamera(const Camera& c, const std::string& source) {
@@ -72,19 +66,8 @@ std::string cameraSidecarPath(const std::string& scenePath) {
 }
 
 Camera loadCamera(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open camera file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path, lineOfByte(text, e.byte), "malformed JSON: " + std::string(e.what()));
-  } catch (const nlohmann::json::exception& e) {  // e.g. a number that overflows a double
-    throw InputError(path, 0, "unreadable JSON: " + std::string(e.what()));
-  }
+  const JsonFile file = readJsonFile(path);
+  const nlohmann::json& j = file.value;
   if (!j.is_object()) throw InputError(path, 1, "a camera file holds one JSON object");
   static const char* known[] = {"position", "look_at", "up", "vfov_degrees", "width", "height",
                                 "lens_radius", "focus_distance", "comment",

@@ -13,6 +13,16 @@
 
 namespace rad {
 
+void storePixelMean(RenderOutput& out, int x, int y, const Rgb& sum, const Rgb& sumSquares, int n) {
+  const Rgb mean = sum / n;
+  out.image.at(x, y) = mean;
+  if (n > 1) {
+    Rgb var = (sumSquares - mean * sum) / (static_cast<double>(n) * (n - 1));
+    for (int c = 0; c < 3; ++c) var[c] = std::max(0.0, var[c]);
+    out.variance.at(x, y) = var;
+  }
+}
+
 RenderOutput renderImage(const Camera& camera, const Integrator& integrator,
                          const RenderSettings& settings) {
   if (settings.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be >= 1");
@@ -46,13 +56,7 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator,
               sum += L;
               sumSquares += L * L;
             }
-            const Rgb mean = sum / n;
-            out.image.at(x, y) = mean;
-            if (n > 1) {
-              Rgb var = (sumSquares - mean * sum) / (static_cast<double>(n) * (n - 1));
-              for (int c = 0; c < 3; ++c) var[c] = std::max(0.0, var[c]);
-              out.variance.at(x, y) = var;
-            }
+            storePixelMean(out, x, y, sum, sumSquares, n);
           }
           if (progress) progress->advance();
         }

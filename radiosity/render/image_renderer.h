@@ -27,6 +27,10 @@ struct RenderOutput {
   double seconds = 0;
 };
 
+// Stores pixel (x, y)'s mean from n samples' sum and sum of squares, and the variance of that mean
+// (0 when n = 1).
+void storePixelMean(RenderOutput& out, int x, int y, const Rgb& sum, const Rgb& sumSquares, int n);
+
 // Renders every pixel with `integrator`. Pixel (x, y) draws from its own random stream keyed by
 // (seed, y·width + x), so the image is the same on any thread count.
 RenderOutput renderImage(const Camera& camera, const Integrator& integrator,

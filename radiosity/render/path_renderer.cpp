@@ -14,17 +14,6 @@
 namespace rad {
 namespace {
 
-// Per-pixel mean and variance of its mean from n samples' sum and sum of squares.
-void storeMean(RenderOutput& out, int x, int y, const Rgb& sum, const Rgb& sumSquares, int n) {
-  const Rgb mean = sum / n;
-  out.image.at(x, y) = mean;
-  if (n > 1) {
-    Rgb var = (sumSquares - mean * sum) / (static_cast<double>(n) * (n - 1));
-    for (int c = 0; c < 3; ++c) var[c] = std::max(0.0, var[c]);
-    out.variance.at(x, y) = var;
-  }
-}
-
 void addSplats(RenderOutput& out, const ImageRgb& sum, const ImageRgb& sumSquares, int spp,
                double paths) {
   for (size_t p = 0; p < out.image.pixels.size(); ++p) {
@@ -87,8 +76,8 @@ PathRenderOutput renderPathImage(const Camera& camera, const PathIntegrator& int
             binSumSquares[b] += binned[b] * binned[b];
           }
         }
-        storeMean(out.full, x, y, sum, sumSquares, n);
-        for (int b = 0; b < bins; ++b) storeMean(out.bins[b], x, y, binSum[b], binSumSquares[b], n);
+        storePixelMean(out.full, x, y, sum, sumSquares, n);
+        for (int b = 0; b < bins; ++b) storePixelMean(out.bins[b], x, y, binSum[b], binSumSquares[b], n);
       }
       if (progress) progress->advance();
     }

@@ -7,15 +7,10 @@
 #include <sstream>
 
 #include "radiosity/core/errors.h"
+#include "radiosity/render/json_file.h"
 
 namespace rad {
 namespace {
-
-int lineOfByte(const std::string& text, size_t byte) {
-  int line = 1;
-  for (size_t i = 0; i < std::min(byte, text.size()); ++i) line += text[i] == '\n';
-  return line;
-}
 
 // nlohmann keeps no positions once parsed: find the n-th occurrence of "key" after `from` in the
 // text instead. Good enough to point a person at the right line of a hand-written sidecar.
@@ -31,19 +26,9 @@ size_t findKey(const std::string& text, const std::string& key, size_t from, int
 }  // namespace
 
 MotionSpec loadMotionSpec(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open camera file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path, lineOfByte(text, e.byte), "malformed JSON: " + std::string(e.what()));
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(path, 0, "unreadable JSON: " + std::string(e.what()));
-  }
+  const JsonFile file = readJsonFile(path);
+  const std::string& text = file.text;
+  const nlohmann::json& j = file.value;
   MotionSpec spec;
   spec.source = path;
   if (!j.is_object()) return spec;  // loadCamera reports this
