@@ -11,11 +11,14 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 
 #include "radiosity/core/errors.h"
 #include "viewer/solution_polydata.h"
+#include "viewer/solution_vtp_layout.h"
 
 namespace rad {
 
@@ -102,10 +105,15 @@ void checkSolutionValues(const std::string& path, vtkPolyData* data) {
 
 vtkSmartPointer<vtkPolyData> readSolutionVtp(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "no such file");
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.good() && !in.eof()) throw InputError(path, 0, "cannot read the file");
+  // VTK's reader trusts the counts in the file; it only sees bytes whose layout is ours, and
+  // the very bytes that were checked (read from memory, not the file again).
+  checkSolutionVtpLayout(path, bytes);
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-  if (!reader->CanReadFile(path.c_str()))
-    throw InputError(path, 0, "not a VTK XML PolyData (.vtp) file");
-  reader->SetFileName(path.c_str());
+  reader->ReadFromInputStringOn();
+  reader->SetInputString(bytes);
   reader->Update();
   vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
   if (reader->GetErrorCode() != 0 || !data || data->GetNumberOfCells() == 0)

@@ -21,8 +21,10 @@ void writeSolutionVtp(std::ostream& out, const PatchMesh& mesh, const std::vecto
                       const std::string& sceneFile);
 void writeSolutionVtp(std::ostream& out, vtkPolyData* solution);
 
-// Reads solution.vtp back and checks that it holds triangles and every array of the layout with
-// the right number of components and tuples; InputError naming the file otherwise.
+// Reads solution.vtp back: first checks that the file has the layout writeSolutionVtp writes
+// (solution_vtp_layout.h: VTK's reader is never given anything else), then that it holds every
+// array of the solution with the right number of components and tuples and values the viewer
+// can use; InputError naming the file otherwise.
 vtkSmartPointer<vtkPolyData> readSolutionVtp(const std::string& path);
 
 // The scene file recorded in the solution ("" when absent).

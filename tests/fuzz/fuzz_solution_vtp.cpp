@@ -1,5 +1,6 @@
 // libFuzzer target: a saved solution (solution.vtp) as `radiosity view DIR` reads it back:
-// readSolutionVtp (VTK's XML reader, then the layout and value checks), then everything the
+// readSolutionVtp (the check of the writer's layout, VTK's XML reader on what passes it, then the
+// array and value checks), then everything the
 // viewer computes from the file before it draws: the tone map, the scene name, the per-cell
 // values of every --scalar, their colour maps, and the smooth per-point averages.
 // Findings: crashes, sanitizer reports, any exception other than InputError, or an accepted

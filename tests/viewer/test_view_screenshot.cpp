@@ -188,6 +188,27 @@ TEST(ViewScreenshot, SteppedSolverBrightensTowardsTheSolution) {
   fs::remove_all(dir);
 }
 
+// The files on which VTK 9.1's XML reader crashed (fuzzer findings, kept in the corpus): `view`
+// refuses each with exit code 1 naming the file and line, instead of dying with SIGSEGV.
+TEST(ViewScreenshot, FilesThatCrashedVtksReaderAreRefused) {
+  if (!haveXvfb())
+    GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
+  const std::string corpus = std::string(RADIOSITY_DATA_DIR) + "/../tests/fuzz/corpus/solution_vtp/";
+  const fs::path dir = testing::scratchPath("view_vtk_crash");
+  fs::create_directories(dir);
+  for (const char* name :
+       {"regression_vtk_string_array_ascii.vtp", "regression_vtk_string_array_binary.vtp"}) {
+    fs::copy_file(corpus + name, dir / "solution.vtp", fs::copy_options::overwrite_existing);
+    std::string errors;
+    const fs::path png = dir / "never.png";
+    EXPECT_EQ(runView(dir.string() + " --screenshot " + png.string(), errors), 1) << name;
+    EXPECT_NE(errors.find((dir / "solution.vtp").string() + ":"), std::string::npos)
+        << name << ": " << errors;
+    EXPECT_FALSE(fs::exists(png)) << name;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(ViewScreenshot, BadInputNamesTheFileAndLeavesNoPng) {
   if (!haveXvfb())
     GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
