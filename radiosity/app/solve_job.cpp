@@ -157,11 +157,29 @@ void checkSceneLimits(const Scene& scene) {
   // Beyond this, double precision leaves less than a millimetre-per-kilometre of resolution and
   // Embree's single-precision BVH cannot separate nearby surfaces.
   for (std::size_t i = 0; i < scene.positions.size(); ++i)
-    if (!(scene.positions[i].cwiseAbs().maxCoeff() <= kMaxCoordinate))
+    if (!scene.positions[i].allFinite() || !(scene.positions[i].cwiseAbs().maxCoeff() <= kMaxCoordinate))
       throw InputError(scene.sourcePath, 0,
                        "vertex " + std::to_string(i + 1) + " has a coordinate beyond " +
                            formatNumber(kMaxCoordinate) + " scene units: rescale the scene");
 }
+
+namespace {
+
+// Each polygon is one patch, in scene order. One whose triangles hold no area (or a NaN one)
+// would be dropped silently by everything after; it is named by its `f` line instead.
+void checkPatchAreas(const PatchMesh& mesh, const Scene& scene) {
+  if (mesh.patchCount() != static_cast<int>(scene.polygons.size())) return;
+  std::vector<double> areas(scene.polygons.size(), 0.0);
+  for (int e = 0; e < mesh.elementCount(); ++e) areas[mesh.patch(e)] += mesh.area(e);
+  for (std::size_t p = 0; p < areas.size(); ++p)
+    if (!(areas[p] > 0) || !std::isfinite(areas[p]))
+      throw InputError(scene.sourcePath, scene.polygons[p].sourceLine,
+                       "this face triangulates to " +
+                           std::string(std::isfinite(areas[p]) ? "no area" : "a non-finite area") +
+                           " (a self-intersecting or degenerate polygon?)");
+}
+
+}  // namespace
 
 SolveResult runSolve(const SolveOptions& options) {
   const auto start = Clock::now();
@@ -218,6 +236,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
 
   auto t = Clock::now();
   result.mesh = std::make_unique<PatchMesh>(buildPatchMesh(result.scene));
+  checkPatchAreas(*result.mesh, result.scene);
   const double totalArea = result.mesh->totalArea();
   if (!(totalArea > 0) || !std::isfinite(totalArea))
     throw InputError(result.scene.sourcePath, 0,

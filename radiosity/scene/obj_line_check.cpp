@@ -109,6 +109,7 @@ class ObjChecker {
     if (keyword == "v") {
       parseNumbers(tokens, 3, std::numeric_limits<std::size_t>::max(), path_, line);
       ++counts_.vertices;
+      result_.vertexLines.push_back(line);
     } else if (keyword == "vt") {
       parseNumbers(tokens, 1, 3, path_, line);  // u [v [w]], as the OBJ specification allows
       ++counts_.texcoords;

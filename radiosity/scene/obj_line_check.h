@@ -20,6 +20,7 @@ struct ObjLineCheck {
   std::vector<MaterialSource> materials;  // index = tinyobjloader's material id
   std::vector<int> faceLines;             // line of each `f`, in file order
   std::vector<int> faceSizes;             // vertex count of each `f`, in file order
+  std::vector<int> vertexLines;           // line of each `v`, in file order
   long vertexCount = 0;
   long texcoordCount = 0;
 };

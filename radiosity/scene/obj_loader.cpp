@@ -76,15 +76,24 @@ Material defaultMaterial(const std::string& objPath) {
   return material;
 }
 
-std::vector<Eigen::Vector3d> readPositions(const tinyobj::attrib_t& attrib, long expected) {
+std::vector<Eigen::Vector3d> readPositions(const tinyobj::attrib_t& attrib,
+                                           const ObjLineCheck& check, const std::string& objPath) {
   const std::size_t count = attrib.vertices.size() / 3;
-  if (static_cast<long>(count) != expected) {
+  if (static_cast<long>(count) != check.vertexCount) {
     throw RuntimeFailure("tinyobjloader read " + std::to_string(count) + " vertices, expected " +
-                         std::to_string(expected));
+                         std::to_string(check.vertexCount));
   }
   std::vector<Eigen::Vector3d> positions(count);
   for (std::size_t i = 0; i < count; ++i) {
     positions[i] = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
+    // The line check accepted only finite numbers, but tinyobjloader parses them again its own
+    // way: a number it reads as NaN or infinity must not reach the mesh (it would turn every
+    // triangle touching the vertex into NaN area).
+    if (!positions[i].allFinite()) {
+      throw InputError(objPath, check.vertexLines[i],
+                       "tinyobjloader reads this vertex as a non-finite position: write its "
+                       "numbers in plain decimal notation");
+    }
   }
   return positions;
 }
@@ -187,7 +196,7 @@ Scene loadObjScene(const std::string& objPath) {
 
   Scene scene;
   scene.sourcePath = objPath;
-  scene.positions = readPositions(reader.GetAttrib(), check.vertexCount);
+  scene.positions = readPositions(reader.GetAttrib(), check, objPath);
   if (static_cast<long>(reader.GetAttrib().texcoords.size() / 2) != check.texcoordCount) {
     throw RuntimeFailure("tinyobjloader read " +
                          std::to_string(reader.GetAttrib().texcoords.size() / 2) +

@@ -1,5 +1,6 @@
 #include "radiosity/scene/obj_tokens.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cmath>
@@ -12,6 +13,9 @@
 
 namespace rad {
 namespace {
+
+// The largest decimal exponent of a finite double (DBL_MAX_10_EXP).
+constexpr int kMaxDecimalExponent = 308;
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v'; }
 
@@ -91,6 +95,19 @@ double parseNumberToken(const std::string& token, const std::string& keyword,
   if (!whole || !decimal) {
     throw InputError(file, line,
                      "malformed number " + quoted(token) + " in '" + keyword + "' statement");
+  }
+  // tinyobjloader multiplies the mantissa by pow(10, exponent): beyond ±308 that power is
+  // infinite or zero, and "0e400" (0 here) becomes 0 × inf = NaN there.
+  const std::size_t e = token.find_first_of("eE");
+  if (e != std::string::npos) {
+    std::string digits = token.substr(e + 1 + (token[e + 1] == '+' || token[e + 1] == '-'));
+    digits.erase(0, std::min(digits.size(), digits.find_first_not_of('0')));
+    if (digits.size() > 3 || (!digits.empty() && std::stoi(digits) > kMaxDecimalExponent)) {
+      throw InputError(file, line,
+                       "number " + quoted(token) + " in '" + keyword +
+                           "' statement has an exponent beyond ±" +
+                           std::to_string(kMaxDecimalExponent));
+    }
   }
   return value;
 }

@@ -24,8 +24,9 @@ bool readTextFile(const std::string& path, std::string* text);
 // Joins tokens with single spaces: the normalised line handed on to tinyobjloader.
 std::string joinTokens(const std::vector<std::string>& tokens);
 
-// The whole token must be a finite decimal number. Hex and nan/inf are refused because strtod
-// accepts them but tinyobjloader's own number parser does not read them the same way.
+// The whole token must be a finite decimal number with an exponent within ±308. Hex, nan/inf
+// and larger exponents are refused because strtod accepts them but tinyobjloader's own number
+// parser does not read them the same way ("0e400": 0 for strtod, NaN for tinyobjloader).
 // Throws InputError(file, line, ...) naming the token and the statement's keyword.
 double parseNumberToken(const std::string& token, const std::string& keyword,
                         const std::string& file, int line);

@@ -112,6 +112,14 @@ INSTANTIATE_TEST_SUITE_P(
               return "mtllib scene.mtl\nv 1e999 0 0\nv 0 1 0\nv 0 0 1\nusemtl light\nf 1 2 3\n";
             },
             "scene.obj:2:", "v"},
+        // A fuzzer find: strtod reads "0.e372702" as 0, tinyobjloader as NaN; the face using
+        // that vertex had NaN area and the whole scene was refused without a line.
+        HostileCase{"exponent_beyond_double",
+                    [] {
+                      return "mtllib scene.mtl\n" + kQuad +
+                             "v 0.5 0.e372702 0\nusemtl light\nf 1 2 3 4\nusemtl wall\nf 1 2 5\n";
+                    },
+                    "scene.obj:6:", "exponent beyond"},
         HostileCase{"empty_file", [] { return std::string(); }, "scene.obj", "emitter"}),
     [](const ::testing::TestParamInfo<HostileCase>& info) { return std::string(info.param.name); });
 

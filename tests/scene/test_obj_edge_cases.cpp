@@ -198,6 +198,11 @@ TEST_F(ObjEdgeCases, ObjErrorsCarryTheirLine) {
   expectError("inf.obj", "inf.obj", 2, "non-finite number '-inf'");
   write("huge.obj", "v 1e999 0 0\n");
   expectError("huge.obj", "huge.obj", 1, "non-finite number '1e999'");
+  // strtod reads "0.e372702" as 0, tinyobjloader as 0 × pow(10, 372702) = NaN (a fuzzer find).
+  write("nan.obj", head + "v 0.e372702 0 0\n");
+  expectError("nan.obj", "nan.obj", 7, "number '0.e372702' in 'v' statement has an exponent beyond");
+  write("tiny.obj", head + "vt 1e-400 0\n");
+  expectError("tiny.obj", "tiny.obj", 7, "exponent beyond ±308");
   write("two.obj", "v 1 2\n");
   expectError("two.obj", "two.obj", 1, "'v' needs at least 3 numbers, found 2");
   write("early.obj", std::string("usemtl grey\nmtllib m.mtl\n"));
@@ -206,6 +211,20 @@ TEST_F(ObjEdgeCases, ObjErrorsCarryTheirLine) {
   expectError("spaces.obj", "spaces.obj", 7, "contains spaces");
   write("nolib.obj", "mtllib\n");
   expectError("nolib.obj", "nolib.obj", 1, "'mtllib' needs a file name");
+}
+
+// Exponents within a double's range, however written, are read as strtod reads them.
+TEST_F(ObjEdgeCases, ExponentsWithinRangeAreAccepted) {
+  write("m.mtl", kMaterials);
+  const Scene scene = loadObjScene(write(
+      "e.obj", "mtllib m.mtl\nv 0 0 0\nv 1e+0000000 0 0\nv 1E0 10e-1 0\nv 0 0.01e+002 1e-308\n"
+               "usemtl lamp\nf 1 2 3 4\n"));
+  ASSERT_EQ(scene.positions.size(), 4u);
+  EXPECT_EQ(scene.positions[1].x(), 1.0);
+  EXPECT_EQ(scene.positions[2].y(), 1.0);
+  EXPECT_EQ(scene.positions[3].y(), 1.0);
+  EXPECT_GE(scene.positions[3].z(), 0.0);
+  EXPECT_LT(scene.positions[3].z(), 1e-300);
 }
 
 TEST_F(ObjEdgeCases, TextureCoordinatesArePerFaceCorner) {
