@@ -106,14 +106,16 @@ void checkSolutionValues(const std::string& path, vtkPolyData* data) {
 vtkSmartPointer<vtkPolyData> readSolutionVtp(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "no such file");
   std::ifstream in(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) throw InputError(path, 0, "cannot read the file");
+  if (!in.is_open()) throw InputError(path, 0, "cannot open the file");
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw InputError(path, 0, "cannot read the file");
   // VTK's reader trusts the counts in the file; it only sees bytes whose layout is ours, and
   // the very bytes that were checked (read from memory, not the file again).
   checkSolutionVtpLayout(path, bytes);
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
   reader->ReadFromInputStringOn();
   reader->SetInputString(bytes);
+  std::string().swap(bytes);  // the reader keeps its own copy
   reader->Update();
   vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
   if (reader->GetErrorCode() != 0 || !data || data->GetNumberOfCells() == 0)
