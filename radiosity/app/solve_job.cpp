@@ -372,10 +372,20 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     // Adaptive refinement: split where the displayed radiance departs most from the solution or a
     // shadow boundary crosses, up to this pass's share of the element budget, then let the new
     // elements gather what was already shot and carry on shooting.
-    std::vector<double> luminance(mesh.elementCount());
-    for (int e = 0; e < mesh.elementCount(); ++e) luminance[e] = solver->solution()[e].luminance();
-    const std::vector<int> selected =
-        selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
+    std::vector<int> selected;
+    if (options.receiverPoints == 3) {
+      // The receiver points resolve a linear field per element: refine by what is displayed
+      // against them.
+      const auto& atPoints = static_cast<ProgressiveSolver&>(*solver).pointSolution();
+      std::vector<std::array<double, 3>> luminance(mesh.elementCount());
+      for (int e = 0; e < mesh.elementCount(); ++e)
+        for (int k = 0; k < 3; ++k) luminance[e][k] = atPoints[e][k].luminance();
+      selected = selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
+    } else {
+      std::vector<double> luminance(mesh.elementCount());
+      for (int e = 0; e < mesh.elementCount(); ++e) luminance[e] = solver->solution()[e].luminance();
+      selected = selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
+    }
     unrefined = mesh.elementCount() - static_cast<int>(selected.size());
     if (selected.empty()) break;
     const int before = mesh.elementCount();
@@ -385,7 +395,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     result.problem = makeProblem(result.scene, mesh);
     analytic->meshChanged(changed);
     static_cast<ProgressiveSolver&>(*solver).elementsChanged(
-        changed, [&](int e, int s) { return analytic->elementToShooterCached(e, s); });
+        changed, [&](int e, int s) { return analytic->elementToShooterAtPointsCached(e, s); });
     ++result.refinementPasses;
     logInfo("refinement pass " + std::to_string(pass + 1) + ": " + std::to_string(selected.size()) +
             " candidates, " + std::to_string(before) + " → " + std::to_string(mesh.elementCount()) +
@@ -405,6 +415,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
 
   result.radiosity = solver->solution();
   const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver.get());
+  if (shooting && analytic && options.receiverPoints == 3) result.pointRadiosity = shooting->pointSolution();
   const std::vector<Rgb> unshot = shooting ? shooting->unshotPowerOfElements() : std::vector<Rgb>();
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const Rgb& b = result.radiosity[e];

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -61,6 +62,9 @@ struct SolveResult {
   std::unique_ptr<PatchMesh> mesh;
   RadiosityProblem problem;
   std::vector<Rgb> radiosity;  // B per element, W/m² (for scenes in metres)
+  // B at each element's 3 Gauss points (analytic factors with 3 receiver points and progressive
+  // shooting; their mean is `radiosity`), or empty: what vertex colours interpolate from.
+  std::vector<std::array<Rgb, 3>> pointRadiosity;
   // With keepBounceTerms: term k = B_k − B_{k−1} = (rho F)^k E of the Jacobi iterates, k ≥ 0.
   std::vector<std::vector<Rgb>> bounceTerms;
   std::string solverName, progressMeasure;
