@@ -47,9 +47,9 @@ std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<do
 // a linear field, borders and creases included; about h²·|∇²L| where the field bends (the
 // elements around a vertex extrapolate to different values), a fraction of the jump where a
 // shadow edge or contact crosses. Fills displayedCorners (the displayed corner values) if given.
-std::vector<double> displayedPointError(const PatchMesh& mesh,
-                                        const std::vector<std::array<double, 3>>& pointLuminance,
-                                        std::vector<std::array<double, 3>>* displayedCorners = nullptr);
+std::vector<double> displayedPointError(
+    const PatchMesh& mesh, const std::vector<std::array<double, 3>>& pointLuminance,
+    std::vector<std::array<double, 3>>* displayedCorners = nullptr);
 
 // selectForRefinement from Gauss-point values (displayedPointError as the error, the mean of
 // the three as the element's value): what a solve with 3 receiver points refines by.

@@ -49,7 +49,8 @@ class VertexInterpolation {
 template <class Value>
 std::array<Value, 3> linearAtCorners(const std::array<Value, 3>& atGaussPoints) {
   const Value mean = (atGaussPoints[0] + atGaussPoints[1] + atGaussPoints[2]) / 3.0;
-  return {2.0 * atGaussPoints[0] - mean, 2.0 * atGaussPoints[1] - mean, 2.0 * atGaussPoints[2] - mean};
+  return {2.0 * atGaussPoints[0] - mean, 2.0 * atGaussPoints[1] - mean,
+          2.0 * atGaussPoints[2] - mean};
 }
 
 }  // namespace rad

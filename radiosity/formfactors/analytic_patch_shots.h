@@ -78,7 +78,8 @@ class AnalyticPatchShots : public ShotRows {
   void updateElementGeometry(int element);
   std::array<double, 3> elementToShooterAtPoints(int receiver, int shooter) const;
   // Adds receiver j's entry to a row of `shooter` from its point factors (none when zero).
-  void appendEntry(FormFactorRow& row, int shooter, int j, const std::array<double, 3>& pointFactors) const;
+  void appendEntry(FormFactorRow& row, int shooter, int j,
+                   const std::array<double, 3>& pointFactors) const;
 
   const PatchMesh& mesh_;
   const RayCaster& rays_;

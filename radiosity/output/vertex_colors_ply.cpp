@@ -41,10 +41,11 @@ std::vector<Rgb> interpolateVertexRadiance(const VertexInterpolation& interpolat
   return radiance;
 }
 
-std::vector<Rgb> interpolateVertexRadiance(const VertexInterpolation& interpolation,
-                                           const std::vector<Rgb>& radiosityPerElement,
-                                           const std::vector<std::array<Rgb, 3>>& radiosityAtPoints) {
-  if (radiosityAtPoints.empty()) return interpolateVertexRadiance(interpolation, radiosityPerElement);
+std::vector<Rgb> interpolateVertexRadiance(
+    const VertexInterpolation& interpolation, const std::vector<Rgb>& radiosityPerElement,
+    const std::vector<std::array<Rgb, 3>>& radiosityAtPoints) {
+  if (radiosityAtPoints.empty())
+    return interpolateVertexRadiance(interpolation, radiosityPerElement);
   std::vector<std::array<Eigen::Vector3d, 3>> corners(radiosityAtPoints.size());
   for (size_t e = 0; e < corners.size(); ++e) {
     std::array<Eigen::Vector3d, 3> g;

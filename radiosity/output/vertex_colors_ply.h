@@ -21,9 +21,9 @@ std::vector<Rgb> interpolateVertexRadiance(const VertexInterpolation& interpolat
 // averaged per output vertex (VertexInterpolation::interpolateCorners), clamped at zero where
 // the extrapolation overshoots past a shadow edge. Falls back to the element means when
 // `radiosityAtPoints` is empty.
-std::vector<Rgb> interpolateVertexRadiance(const VertexInterpolation& interpolation,
-                                           const std::vector<Rgb>& radiosityPerElement,
-                                           const std::vector<std::array<Rgb, 3>>& radiosityAtPoints);
+std::vector<Rgb> interpolateVertexRadiance(
+    const VertexInterpolation& interpolation, const std::vector<Rgb>& radiosityPerElement,
+    const std::vector<std::array<Rgb, 3>>& radiosityAtPoints);
 
 // Writes the solution as baked vertex colours: a binary_little_endian PLY 1.0 that MeshLab and
 // Blender read. Per vertex: float x y z, float nx ny nz, float radiance_r radiance_g radiance_b

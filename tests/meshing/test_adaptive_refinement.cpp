@@ -134,7 +134,8 @@ std::vector<std::array<double, 3>> sampledAtGaussPoints(const PatchMesh& mesh, F
   std::vector<std::array<double, 3>> values(mesh.elementCount());
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const auto c = mesh.corners(e);
-    for (int k = 0; k < 3; ++k) values[e][k] = field((4 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6);
+    for (int k = 0; k < 3; ++k)
+      values[e][k] = field((4 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6);
   }
   return values;
 }
@@ -143,7 +144,8 @@ TEST(AdaptiveRefinement, GaussPointValuesShowASteepLinearFieldExactlyBordersIncl
   // The field that the element-mean estimate flags at the borders (one-sided means) is shown
   // exactly from the Gauss points, so the point estimate is zero everywhere and nothing is split.
   const PatchMesh mesh = unitSquare(1.0 / 256);
-  const auto values = sampledAtGaussPoints(mesh, [](const Eigen::Vector3d& c) { return 1.0 + 10.0 * c.x(); });
+  const auto values =
+      sampledAtGaussPoints(mesh, [](const Eigen::Vector3d& c) { return 1.0 + 10.0 * c.x(); });
   for (double error : displayedPointError(mesh, values)) EXPECT_LT(error, 1e-9);
   EXPECT_TRUE(selectForRefinement(mesh, values, {}, {0.01, 0, 0}).empty());
 }
@@ -155,7 +157,8 @@ TEST(AdaptiveRefinement, GaussPointEstimateSeesCurvatureAndShrinksWithTheSquareO
   auto largest = [&](double area) {
     const PatchMesh mesh = unitSquare(area);
     double worst = 0;
-    for (double error : displayedPointError(mesh, sampledAtGaussPoints(mesh, field))) worst = std::max(worst, error);
+    for (double error : displayedPointError(mesh, sampledAtGaussPoints(mesh, field)))
+      worst = std::max(worst, error);
     return worst;
   };
   const double coarse = largest(1.0 / 64), fine = largest(1.0 / 256);
@@ -171,7 +174,8 @@ TEST(AdaptiveRefinement, GaussPointEstimateRefinesAStepAlongItsLineOnly) {
       sampledAtGaussPoints(mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.37 ? 1.0 : 0.1; });
   const std::vector<int> selected = selectForRefinement(mesh, values, {}, {0.1, 0, 0});
   ASSERT_FALSE(selected.empty());
-  for (int e : selected) EXPECT_LT(std::fabs(mesh.centroid(e).x() - 0.37), 1.5 * h) << "element " << e;
+  for (int e : selected)
+    EXPECT_LT(std::fabs(mesh.centroid(e).x() - 0.37), 1.5 * h) << "element " << e;
 }
 
 }  // namespace
