@@ -122,10 +122,14 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
   return problem;
 }
 
-uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays) {
+uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays,
+                                  int receiverPoints) {
   constexpr uint64_t kBytesPerEntry = 12;  // 4-byte column index + 8-byte value
+  constexpr uint64_t kBytesPerPoints = 12;  // 3 single-precision point factors
   const uint64_t n = static_cast<uint64_t>(std::max(elements, 0));
-  if (method == FormFactorMethod::Analytic) return n * static_cast<uint64_t>(std::max(shooters, 0)) * kBytesPerEntry;
+  if (method == FormFactorMethod::Analytic)
+    return n * static_cast<uint64_t>(std::max(shooters, 0)) *
+           (kBytesPerEntry + (receiverPoints == 3 ? kBytesPerPoints : 0));
   return n * std::min<uint64_t>(static_cast<uint64_t>(std::max(rays, 0)), n) * kBytesPerEntry;
 }
 
@@ -234,7 +238,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
                                ? std::ceil(totalArea / (options.patchArea > 0 ? options.patchArea : 8 * result.maxArea))
                                : elements;
     checkFormFactorMemory(formFactorMemoryEstimate(options.formFactors, static_cast<int>(elements),
-                                                   static_cast<int>(std::min(patches, elements)), options.raysPerElement),
+                                                   static_cast<int>(std::min(patches, elements)), options.raysPerElement,
+                                                   options.receiverPoints),
                           availableMemoryBytes(), options.formFactors);
   }
   if (options.formFactors == FormFactorMethod::Analytic) {
