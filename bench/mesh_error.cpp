@@ -3,7 +3,7 @@
 // and lightmaps show) against a converged reference, at the reference's element centroids,
 // weighted by area (emitters excluded: they are exact in every solution).
 //
-//   mesh_error [--reference-elements N] [--out DIR]
+//   mesh_error [--reference-elements N] [--out DIR] [--quick] [--breakdown]
 //
 // Every solve uses analytic form factors (patches shoot, elements receive) and progressive
 // shooting to 1e-5. The reference is a uniform mesh of about N elements whose values are point
@@ -13,7 +13,13 @@
 // from a coarse uniform mesh (386 elements, each a shooting patch) and refine with threshold 0.1
 // and the default passes and minimum area up to each element budget (--max-elements). For each
 // adaptive solve the uniform element count with the same error is read off the uniform curve
-// (log-log interpolation; extrapolated along its last segment, and flagged, past its end). Writes DIR/mesh_error.csv and DIR/mesh_error.svg, and DIR/mesh_error.png with
+// (log-log interpolation; extrapolated along its last segment, and flagged, past its end).
+// The displayed radiance is what `radiosity solve` writes as vertex colours (from the values at
+// each element's 3 receiver points); a second error column shows the same solves displayed the
+// older way, each vertex the area-weighted mean of its elements' values. --quick: a smaller
+// reference (2000) and the runs up to 2000 uniform / 1600 adaptive, for iterating (~1 min).
+// --breakdown: each run's squared error split by OBJ object (floor, blocks, ...) on stdout.
+// Writes DIR/mesh_error.csv and DIR/mesh_error.svg, and DIR/mesh_error.png with
 // bench/plot_mesh_error.py when /usr/bin/python3 has matplotlib.
 #include <Eigen/Geometry>
 #include <chrono>
@@ -21,12 +27,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
+#include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 
@@ -89,10 +97,13 @@ Eigen::Vector3d radiance(const Rgb& b) { return Eigen::Vector3d(b.r, b.g, b.b) /
 // on none, by rounding).
 class DisplayedRadiance {
  public:
-  explicit DisplayedRadiance(const SolveResult& r) : result_(r), interpolation_(*r.mesh) {
-    std::vector<Eigen::Vector3d> perElement(r.radiosity.size());
-    for (size_t e = 0; e < perElement.size(); ++e) perElement[e] = radiance(r.radiosity[e]);
-    vertexValues_ = interpolation_.interpolate(perElement);
+  // elementMeans: vertices take the area-weighted mean of their elements' values (the display
+  // before receiver-point values); otherwise the vertex colours `radiosity solve` writes.
+  explicit DisplayedRadiance(const SolveResult& r, bool elementMeans = false)
+      : result_(r), interpolation_(*r.mesh) {
+    const std::vector<std::array<Rgb, 3>> none;
+    for (const Rgb& l : interpolateVertexRadiance(interpolation_, r.radiosity, elementMeans ? none : r.pointRadiosity))
+      vertexValues_.emplace_back(l.r, l.g, l.b);
     byPatch_.resize(r.mesh->patchCount());
     for (int e = 0; e < r.mesh->elementCount(); ++e) byPatch_[r.mesh->patch(e)].push_back(e);
   }
@@ -133,16 +144,23 @@ class DisplayedRadiance {
 };
 
 // Relative RMS over the reference's non-emitting elements, area-weighted, of value(e) − truth(e).
+// With `byObject`, also each OBJ object's share of the squared relative error (they sum to its
+// square).
 template <class Value>
-double relativeRms(const SolveResult& reference, Value value) {
+double relativeRms(const SolveResult& reference, Value value, std::map<std::string, double>* byObject = nullptr) {
   const PatchMesh& ref = *reference.mesh;
   double num = 0, den = 0;
+  std::map<std::string, double> parts;
   for (int e = 0; e < ref.elementCount(); ++e) {
     if (reference.problem.emission[e].maxComponent() > 0) continue;
     const Eigen::Vector3d truth = radiance(reference.radiosity[e]);
-    num += ref.area(e) * (value(e) - truth).squaredNorm();
+    const double squared = ref.area(e) * (value(e) - truth).squaredNorm();
+    num += squared;
+    parts[reference.scene.polygons[ref.patch(e)].object] += squared;
     den += ref.area(e) * truth.squaredNorm();
   }
+  if (byObject)
+    for (const auto& [object, part] : parts) (*byObject)[object] = part / den;
   return std::sqrt(num / den);
 }
 
@@ -153,17 +171,21 @@ double seconds(std::chrono::steady_clock::time_point since) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int referenceElements = 4000;
+  int referenceElements = 0;
   std::string outDir = "bench/mesh_results";
-  for (int i = 1; i < argc; i += 2) {
+  bool quick = false, breakdown = false;
+  for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
-    if (i + 1 < argc && flag == "--reference-elements") referenceElements = std::atoi(argv[i + 1]);
-    else if (i + 1 < argc && flag == "--out") outDir = argv[i + 1];
+    if (i + 1 < argc && flag == "--reference-elements") referenceElements = std::atoi(argv[++i]);
+    else if (i + 1 < argc && flag == "--out") outDir = argv[++i];
+    else if (flag == "--quick") quick = true;
+    else if (flag == "--breakdown") breakdown = true;
     else {
-      std::fprintf(stderr, "usage: mesh_error [--reference-elements N] [--out DIR]\n");
+      std::fprintf(stderr, "usage: mesh_error [--reference-elements N] [--out DIR] [--quick] [--breakdown]\n");
       return 2;
     }
   }
+  if (referenceElements == 0) referenceElements = quick ? 2000 : 4000;
   if (referenceElements < 500) {
     std::fprintf(stderr, "mesh_error: --reference-elements must be at least 500\n");
     return 2;
@@ -188,13 +210,15 @@ int main(int argc, char** argv) {
                check.mesh->elementCount(), check.shooters, seconds(t0), referenceError);
 
   std::vector<Config> configs;
-  for (int n : {125, 250, 500, 1000, 2000, 4000}) configs.push_back({"uniform", n, 0});
-  for (int budget : {800, 1600, 3200}) configs.push_back({"adaptive", 250, budget});
+  for (int n : {125, 250, 500, 1000, 2000, 4000})
+    if (!quick || n <= 2000) configs.push_back({"uniform", n, 0});
+  for (int budget : {800, 1600, 3200})
+    if (!quick || budget <= 1600) configs.push_back({"adaptive", 250, budget});
 
   struct Point {
     Config config;
     int elements, shooters;
-    double error, seconds;
+    double error, seconds, errorElementMeans;
   };
   std::vector<Point> points;
   for (const Config& c : configs) {
@@ -202,12 +226,22 @@ int main(int argc, char** argv) {
     const SolveResult r = c.kind == "uniform" ? solveUniform(scene, c.startElements)
                                               : solveAdaptive(scene, c.startElements, c.budget);
     const double time = seconds(t0);
-    const DisplayedRadiance field(r);
+    const DisplayedRadiance field(r), meansField(r, true);
     const PatchMesh& ref = *reference.mesh;
-    const double error = relativeRms(reference, [&](int e) { return field.at(ref.patch(e), ref.centroid(e)); });
-    points.push_back({c, r.mesh->elementCount(), r.shooters, error, time});
-    std::fprintf(stderr, "%-8s start %5d budget %5d: %5d elements, %4d patches, relative RMS error %.4f (%.1f s)\n",
-                 c.kind.c_str(), c.startElements, c.budget, r.mesh->elementCount(), r.shooters, error, time);
+    std::map<std::string, double> byObject;
+    const double error =
+        relativeRms(reference, [&](int e) { return field.at(ref.patch(e), ref.centroid(e)); }, &byObject);
+    const double errorMeans = relativeRms(reference, [&](int e) { return meansField.at(ref.patch(e), ref.centroid(e)); });
+    points.push_back({c, r.mesh->elementCount(), r.shooters, error, time, errorMeans});
+    std::fprintf(stderr,
+                 "%-8s start %5d budget %5d: %5d elements, %4d patches, relative RMS error %.4f (element means: "
+                 "%.4f) (%.1f s)\n",
+                 c.kind.c_str(), c.startElements, c.budget, r.mesh->elementCount(), r.shooters, error, errorMeans, time);
+    if (breakdown) {
+      std::printf("%s %d elements: squared relative error %.5f =", c.kind.c_str(), r.mesh->elementCount(), error * error);
+      for (const auto& [object, part] : byObject) std::printf(" %s %.5f", object.c_str(), part);
+      std::printf("\n");
+    }
   }
 
   // Uniform elements needed for the same error as each adaptive mesh: log-log interpolation along
@@ -227,23 +261,24 @@ int main(int argc, char** argv) {
 
   std::ofstream csv(outDir + "/mesh_error.csv");
   csv << "kind,start_target,budget,elements,shooting_patches,relative_rms_error,seconds,"
-         "uniform_elements_same_error,element_ratio,extrapolated\n";
+         "uniform_elements_same_error,element_ratio,extrapolated,relative_rms_error_element_means\n";
   for (const Point& p : points) {
     csv << p.config.kind << "," << p.config.startElements << "," << p.config.budget << "," << p.elements << ","
         << p.shooters << "," << p.error << "," << p.seconds << ",";
     if (p.config.kind == "adaptive") {
       bool extrapolated = false;
       const double same = uniformElementsFor(p.error, extrapolated);
-      csv << std::lround(same) << "," << same / p.elements << "," << (extrapolated ? 1 : 0) << "\n";
+      csv << std::lround(same) << "," << same / p.elements << "," << (extrapolated ? 1 : 0) << ","
+          << p.errorElementMeans << "\n";
       std::printf("adaptive %5d elements: error %.4f, uniform needs %5ld elements for it (%.2f×%s)\n", p.elements,
                   p.error, std::lround(same), same / p.elements, extrapolated ? ", extrapolated" : "");
     } else {
-      csv << ",,\n";
+      csv << ",,," << p.errorElementMeans << "\n";
       std::printf("uniform  %5d elements: error %.4f\n", p.elements, p.error);
     }
   }
   csv << "reference," << referenceElements << ",0," << reference.mesh->elementCount() << "," << reference.shooters
-      << "," << referenceError << ",0,,,\n";
+      << "," << referenceError << ",0,,,,\n";
   std::printf("reference %d elements; its check differs from it by %.4f (relative RMS)\n",
               reference.mesh->elementCount(), referenceError);
   csv.close();

@@ -81,9 +81,15 @@ std::vector<double> displayedVariation(const PatchMesh& mesh,
   return variation;
 }
 
-std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<double>& luminance,
-                                     const std::vector<char>& partlyShadowed,
-                                     const RefinementOptions& options) {
+namespace {
+
+// Candidates from each element's solved mean, its displayed corner values and its displayed
+// error (see selectForRefinement), most important first.
+std::vector<int> selectByError(const PatchMesh& mesh, const std::vector<double>& luminance,
+                               const std::vector<std::array<double, 3>>& displayed,
+                               const std::vector<double>& defect,
+                               const std::vector<char>& partlyShadowed,
+                               const RefinementOptions& options) {
   const int n = mesh.elementCount();
   double mean = 0, area = 0;
   for (int e = 0; e < n; ++e) {
@@ -93,21 +99,19 @@ std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<do
   mean = area > 0 ? mean / area : 0;
   const double noise = 1e-3 * mean;
 
-  const Corners corners = cornerValues(mesh, luminance);
   std::vector<int> selected;
   std::vector<double> priority(n, 0.0);
   for (int e = 0; e < n; ++e) {
     if (mesh.area(e) <= options.minArea) continue;
-    const double defect = displayError(corners, luminance, e);
     double local = luminance[e], spread = 0;
-    for (double c : corners.displayed[e]) {
+    for (double c : displayed[e]) {
       local = std::max(local, c);
       spread = std::max(spread, std::fabs(c - luminance[e]));
     }
     // A shadow edge inside the element is a jump the element's mean hides (the mean can sit
     // between its corners' values): count it at the spread of the displayed values instead.
     const bool shadowEdge = !partlyShadowed.empty() && partlyShadowed[e];
-    const double error = shadowEdge ? std::max(defect, spread) : defect;
+    const double error = shadowEdge ? std::max(defect[e], spread) : defect[e];
     if (error <= noise) continue;
     if (error > options.threshold * local || shadowEdge) {
       selected.push_back(e);
@@ -119,6 +123,57 @@ std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<do
   std::stable_sort(selected.begin(), selected.end(),
                    [&](int a, int b) { return priority[a] > priority[b]; });
   return selected;
+}
+
+}  // namespace
+
+std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<double>& luminance,
+                                     const std::vector<char>& partlyShadowed,
+                                     const RefinementOptions& options) {
+  const Corners corners = cornerValues(mesh, luminance);
+  std::vector<double> defect(mesh.elementCount());
+  for (int e = 0; e < mesh.elementCount(); ++e) defect[e] = displayError(corners, luminance, e);
+  return selectByError(mesh, luminance, corners.displayed, defect, partlyShadowed, options);
+}
+
+std::vector<double> displayedPointError(const PatchMesh& mesh,
+                                        const std::vector<std::array<double, 3>>& pointLuminance,
+                                        std::vector<std::array<double, 3>>* displayedCorners) {
+  const int n = mesh.elementCount();
+  const VertexInterpolation interpolation(mesh);
+  std::vector<std::array<Eigen::Vector3d, 3>> corners(n);
+  for (int e = 0; e < n; ++e) {
+    std::array<Eigen::Vector3d, 3> g;
+    for (int k = 0; k < 3; ++k) g[k] = Eigen::Vector3d(pointLuminance[e][k], 0, 0);
+    corners[e] = linearAtCorners(g);
+  }
+  std::vector<Eigen::Vector3d> atVertices = interpolation.interpolateCorners(corners);
+  for (auto& v : atVertices) v = v.cwiseMax(0.0);  // as displayed: no negative light
+  std::vector<double> error(n, 0.0);
+  if (displayedCorners) displayedCorners->resize(n);
+  for (int e = 0; e < n; ++e) {
+    std::array<double, 3> d;
+    for (int k = 0; k < 3; ++k) d[k] = atVertices[interpolation.triangle(e)[k]].x();
+    if (displayedCorners) (*displayedCorners)[e] = d;
+    // The displayed plane at the Gauss point near corner k (barycentric 2/3, 1/6, 1/6).
+    for (int k = 0; k < 3; ++k) {
+      const double shown = (4 * d[k] + d[(k + 1) % 3] + d[(k + 2) % 3]) / 6;
+      error[e] = std::max(error[e], std::fabs(shown - pointLuminance[e][k]));
+    }
+  }
+  return error;
+}
+
+std::vector<int> selectForRefinement(const PatchMesh& mesh,
+                                     const std::vector<std::array<double, 3>>& pointLuminance,
+                                     const std::vector<char>& partlyShadowed,
+                                     const RefinementOptions& options) {
+  std::vector<std::array<double, 3>> displayed;
+  const std::vector<double> defect = displayedPointError(mesh, pointLuminance, &displayed);
+  std::vector<double> luminance(mesh.elementCount());
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    luminance[e] = (pointLuminance[e][0] + pointLuminance[e][1] + pointLuminance[e][2]) / 3;
+  return selectByError(mesh, luminance, displayed, defect, partlyShadowed, options);
 }
 
 std::vector<int> refineElements(PatchMesh& mesh, const std::vector<int>& selected,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "meshing/patch_mesh.h"
@@ -34,6 +35,26 @@ std::vector<double> displayedVariation(const PatchMesh& mesh, const std::vector<
 // an element's share of the area-weighted squared error of what is displayed, so a limited budget
 // goes where it removes the most error.
 std::vector<int> selectForRefinement(const PatchMesh& mesh, const std::vector<double>& luminance,
+                                     const std::vector<char>& partlyShadowed,
+                                     const RefinementOptions& options);
+
+// Per element, from values at its 3 Gauss points (barycentric 2/3, 1/6, 1/6, the point near
+// corner k first, in PatchMesh::corners order): how far the radiance displayed over it is from
+// them. What is displayed is the linear field of each element through its Gauss points,
+// evaluated at its corners, averaged per vertex over the elements around it (as
+// VertexInterpolation::interpolateCorners; zero at least), then interpolated linearly; the error
+// is the largest gap, at the Gauss points, between that and the element's own values. Zero for
+// a linear field, borders and creases included; about h²·|∇²L| where the field bends (the
+// elements around a vertex extrapolate to different values), a fraction of the jump where a
+// shadow edge or contact crosses. Fills displayedCorners (the displayed corner values) if given.
+std::vector<double> displayedPointError(
+    const PatchMesh& mesh, const std::vector<std::array<double, 3>>& pointLuminance,
+    std::vector<std::array<double, 3>>* displayedCorners = nullptr);
+
+// selectForRefinement from Gauss-point values (displayedPointError as the error, the mean of
+// the three as the element's value): what a solve with 3 receiver points refines by.
+std::vector<int> selectForRefinement(const PatchMesh& mesh,
+                                     const std::vector<std::array<double, 3>>& pointLuminance,
                                      const std::vector<char>& partlyShadowed,
                                      const RefinementOptions& options);
 

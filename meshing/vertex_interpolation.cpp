@@ -68,4 +68,22 @@ std::vector<Eigen::Vector3d> VertexInterpolation::interpolate(
   return out;
 }
 
+std::vector<Eigen::Vector3d> VertexInterpolation::interpolateCorners(
+    const std::vector<std::array<Eigen::Vector3d, 3>>& perElementCorners) const {
+  // Each element's weight at its corner k, found by its position in the triangle.
+  std::vector<Eigen::Vector3d> out(positions_.size(), Eigen::Vector3d::Zero());
+  for (size_t v = 0; v < positions_.size(); ++v) {
+    double weightSum = 0;
+    for (int k = offsets_[v]; k < offsets_[v + 1]; ++k) {
+      const int e = elements_[k];
+      const auto& t = triangles_[e];
+      const int corner = t[0] == static_cast<int>(v) ? 0 : (t[1] == static_cast<int>(v) ? 1 : 2);
+      out[v] += weights_[k] * perElementCorners[e][corner];
+      weightSum += weights_[k];
+    }
+    if (weightSum > 0) out[v] /= weightSum;
+  }
+  return out;
+}
+
 }  // namespace rad

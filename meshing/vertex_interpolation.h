@@ -23,6 +23,13 @@ class VertexInterpolation {
   const std::array<int, 3>& triangle(int element) const { return triangles_[element]; }
 
   std::vector<Eigen::Vector3d> interpolate(const std::vector<Eigen::Vector3d>& perElement) const;
+  // The same from a value per element corner (perElementCorners[e][k] at corner k of
+  // triangle(e)): each output vertex takes the area-weighted mean of what its elements give at
+  // it. With corners of a field linear over each element (linearAtCorners), a vertex at a border
+  // or crease is extrapolated from its own side instead of averaged over it, so it is exact for
+  // a linear field there too.
+  std::vector<Eigen::Vector3d> interpolateCorners(
+      const std::vector<std::array<Eigen::Vector3d, 3>>& perElementCorners) const;
 
   // The elements whose means make up output vertex v's value.
   std::vector<int> elementsAround(int vertex) const {
@@ -36,5 +43,14 @@ class VertexInterpolation {
   std::vector<int> offsets_, elements_;
   std::vector<double> weights_;
 };
+
+// The corner values of the linear function through values at a triangle's degree-2 Gauss points
+// (barycentric 2/3, 1/6, 1/6, the point near corner k first): 2·g_k − (g_0 + g_1 + g_2)/3.
+template <class Value>
+std::array<Value, 3> linearAtCorners(const std::array<Value, 3>& atGaussPoints) {
+  const Value mean = (atGaussPoints[0] + atGaussPoints[1] + atGaussPoints[2]) / 3.0;
+  return {2.0 * atGaussPoints[0] - mean, 2.0 * atGaussPoints[1] - mean,
+          2.0 * atGaussPoints[2] - mean};
+}
 
 }  // namespace rad

@@ -68,7 +68,7 @@ void runBake(BakeOptions& o) {
 
   const VertexInterpolation interpolation(mesh);
   const std::vector<Rgb> vertexRadiance =
-      interpolateVertexRadiance(interpolation, result.radiosity);
+      interpolateVertexRadiance(interpolation, result.radiosity, result.pointRadiosity);
   std::vector<Rgb> elementRadiance(result.radiosity.size());
   for (size_t e = 0; e < elementRadiance.size(); ++e)
     elementRadiance[e] = result.radiosity[e] / M_PI;

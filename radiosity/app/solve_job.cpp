@@ -122,10 +122,14 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
   return problem;
 }
 
-uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays) {
+uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays,
+                                  int receiverPoints) {
   constexpr uint64_t kBytesPerEntry = 12;  // 4-byte column index + 8-byte value
+  constexpr uint64_t kBytesPerPoints = 12;  // 3 single-precision point factors
   const uint64_t n = static_cast<uint64_t>(std::max(elements, 0));
-  if (method == FormFactorMethod::Analytic) return n * static_cast<uint64_t>(std::max(shooters, 0)) * kBytesPerEntry;
+  if (method == FormFactorMethod::Analytic)
+    return n * static_cast<uint64_t>(std::max(shooters, 0)) *
+           (kBytesPerEntry + (receiverPoints == 3 ? kBytesPerPoints : 0));
   return n * std::min<uint64_t>(static_cast<uint64_t>(std::max(rays, 0)), n) * kBytesPerEntry;
 }
 
@@ -253,7 +257,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
                                ? std::ceil(totalArea / (options.patchArea > 0 ? options.patchArea : 8 * result.maxArea))
                                : elements;
     checkFormFactorMemory(formFactorMemoryEstimate(options.formFactors, static_cast<int>(elements),
-                                                   static_cast<int>(std::min(patches, elements)), options.raysPerElement),
+                                                   static_cast<int>(std::min(patches, elements)), options.raysPerElement,
+                                                   options.receiverPoints),
                           availableMemoryBytes(), options.formFactors);
   }
   if (options.formFactors == FormFactorMethod::Analytic) {
@@ -391,10 +396,20 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     // Adaptive refinement: split where the displayed radiance departs most from the solution or a
     // shadow boundary crosses, up to this pass's share of the element budget, then let the new
     // elements gather what was already shot and carry on shooting.
-    std::vector<double> luminance(mesh.elementCount());
-    for (int e = 0; e < mesh.elementCount(); ++e) luminance[e] = solver->solution()[e].luminance();
-    const std::vector<int> selected =
-        selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
+    std::vector<int> selected;
+    if (options.receiverPoints == 3) {
+      // The receiver points resolve a linear field per element: refine by what is displayed
+      // against them.
+      const auto& atPoints = static_cast<ProgressiveSolver&>(*solver).pointSolution();
+      std::vector<std::array<double, 3>> luminance(mesh.elementCount());
+      for (int e = 0; e < mesh.elementCount(); ++e)
+        for (int k = 0; k < 3; ++k) luminance[e][k] = atPoints[e][k].luminance();
+      selected = selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
+    } else {
+      std::vector<double> luminance(mesh.elementCount());
+      for (int e = 0; e < mesh.elementCount(); ++e) luminance[e] = solver->solution()[e].luminance();
+      selected = selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
+    }
     unrefined = mesh.elementCount() - static_cast<int>(selected.size());
     if (selected.empty()) break;
     const int before = mesh.elementCount();
@@ -404,7 +419,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     result.problem = makeProblem(result.scene, mesh);
     analytic->meshChanged(changed);
     static_cast<ProgressiveSolver&>(*solver).elementsChanged(
-        changed, [&](int e, int s) { return analytic->elementToShooterCached(e, s); });
+        changed, [&](int e, int s) { return analytic->elementToShooterAtPointsCached(e, s); });
     ++result.refinementPasses;
     logInfo("refinement pass " + std::to_string(pass + 1) + ": " + std::to_string(selected.size()) +
             " candidates, " + std::to_string(before) + " → " + std::to_string(mesh.elementCount()) +
@@ -424,6 +439,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
 
   result.radiosity = solver->solution();
   const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver.get());
+  if (shooting && analytic && options.receiverPoints == 3) result.pointRadiosity = shooting->pointSolution();
   const std::vector<Rgb> unshot = shooting ? shooting->unshotPowerOfElements() : std::vector<Rgb>();
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const Rgb& b = result.radiosity[e];

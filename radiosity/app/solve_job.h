@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -61,6 +62,9 @@ struct SolveResult {
   std::unique_ptr<PatchMesh> mesh;
   RadiosityProblem problem;
   std::vector<Rgb> radiosity;  // B per element, W/m² (for scenes in metres)
+  // B at each element's 3 Gauss points (analytic factors with 3 receiver points and progressive
+  // shooting; their mean is `radiosity`), or empty: what vertex colours interpolate from.
+  std::vector<std::array<Rgb, 3>> pointRadiosity;
   // With keepBounceTerms: term k = B_k − B_{k−1} = (rho F)^k E of the Jacobi iterates, k ≥ 0.
   std::vector<std::vector<Rgb>> bounceTerms;
   std::string solverName, progressMeasure;
@@ -102,8 +106,10 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh);
 // Resource limits, decided before the work starts (issue 9).
 // Upper bound on the memory of the form-factor rows a run may store: hemisphere rows hold at
 // most min(rays, elements) entries each; analytic rows (gathering matrix or patch shots) at
-// most elements × shooters entries; about 12 bytes per entry (index and value).
-uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays);
+// most elements × shooters entries; about 12 bytes per entry (index and value), 24 for analytic
+// rows that also keep the factor at each of 3 receiver points (receiverPoints 3).
+uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays,
+                                  int receiverPoints = 1);
 // MemAvailable from /proc/meminfo in bytes; 0 when unknown (the check is then skipped).
 uint64_t availableMemoryBytes();
 // Throws InputError naming the options to change when `needed` exceeds `available` (0: unknown).

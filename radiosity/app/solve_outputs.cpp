@@ -96,7 +96,7 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   writeElementsCsv(csv.stream(), mesh, result.radiosity);
 
   const VertexInterpolation interpolation(mesh);
-  const std::vector<Rgb> vertexRadiance = interpolateVertexRadiance(interpolation, result.radiosity);
+  const std::vector<Rgb> vertexRadiance = interpolateVertexRadiance(interpolation, result.radiosity, result.pointRadiosity);
   std::vector<Rgb> elementRadiance(result.radiosity.size());
   for (size_t e = 0; e < elementRadiance.size(); ++e) elementRadiance[e] = result.radiosity[e] / M_PI;
   const ToneMap toneMap = ToneMap::autoExposure(elementRadiance, result.problem.area);

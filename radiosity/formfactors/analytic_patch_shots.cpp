@@ -3,7 +3,9 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 
@@ -66,34 +68,55 @@ void AnalyticPatchShots::meshChanged(const std::vector<int>& changed) {
     partlyShadowed_[e] = 0;
     updateElementGeometry(e);
   }
+  std::vector<size_t> freshEntry(n, SIZE_MAX);
+  for (size_t k = 0; k < changed.size(); ++k) freshEntry[changed[k]] = k;
   for (int s = 0; s < shooterCount(); ++s) {
     if (!rows_[s]) continue;
-    std::vector<double> fresh(changed.size());
+    std::vector<std::array<double, 3>> fresh(changed.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t k = r.begin(); k != r.end(); ++k) {
-        const int j = changed[k];
-        fresh[k] = elementToShooter(j, s) * mesh_.area(j) / shooterArea_[s];
-      }
+      for (size_t k = r.begin(); k != r.end(); ++k) fresh[k] = elementToShooterAtPoints(changed[k], s);
     });
-    std::vector<double> fraction(n, 0.0);
+    // Unchanged receivers keep their entries as they were; changed ones get the fresh factors.
     const FormFactorRow& old = *rows_[s];
-    for (size_t k = 0; k < old.targets.size(); ++k)
-      if (!isChanged[old.targets[k]]) fraction[old.targets[k]] = old.values[k];
-    for (size_t k = 0; k < changed.size(); ++k) fraction[changed[k]] = fresh[k];
     auto row = std::make_unique<FormFactorRow>();
-    for (int j = 0; j < n; ++j)
-      if (fraction[j] > 0) {
+    std::vector<size_t> oldEntry(n, SIZE_MAX);
+    for (size_t k = 0; k < old.targets.size(); ++k) oldEntry[old.targets[k]] = k;
+    for (int j = 0; j < n; ++j) {
+      if (isChanged[j]) {
+        appendEntry(*row, s, j, fresh[freshEntry[j]]);
+      } else if (oldEntry[j] != SIZE_MAX) {
         row->targets.push_back(j);
-        row->values.push_back(fraction[j]);
+        row->values.push_back(old.values[oldEntry[j]]);
+        if (!old.points.empty()) row->points.push_back(old.points[oldEntry[j]]);
       }
+    }
     row->escaped = std::max(0.0, 1.0 - row->sum());
     rows_[s] = std::move(row);
   }
   seconds_ += secondsSince(start);
 }
 
+void AnalyticPatchShots::appendEntry(FormFactorRow& row, int shooter, int j,
+                                     const std::array<double, 3>& f) const {
+  const double mean = options_.receiverPoints == 1 ? f[0] : (f[0] + f[1] + f[2]) / 3;
+  if (!(mean > 0)) return;
+  // fraction_j = A_j F_js / A_s, per point and for the element (the mean).
+  const double scale = mesh_.area(j) / shooterArea_[shooter];
+  row.targets.push_back(j);
+  row.values.push_back(mean * scale);
+  if (options_.receiverPoints == 3)
+    row.points.push_back({static_cast<float>(f[0] * scale), static_cast<float>(f[1] * scale),
+                          static_cast<float>(f[2] * scale)});
+}
+
 double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
-  if (mesh_.shooter(receiver) == shooter) return 0.0;
+  const auto f = elementToShooterAtPoints(receiver, shooter);
+  return options_.receiverPoints == 1 ? f[0] : (f[0] + f[1] + f[2]) / 3;
+}
+
+std::array<double, 3> AnalyticPatchShots::elementToShooterAtPoints(int receiver, int shooter) const {
+  const std::array<double, 3> none{0.0, 0.0, 0.0};
+  if (mesh_.shooter(receiver) == shooter) return none;
   const auto source = mesh_.shooterCorners(shooter);
   const Eigen::Vector3d& n = normals_[receiver];
   const Eigen::Vector3d& ns = shooterNormal_[shooter];
@@ -103,14 +126,14 @@ double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
   bool sourceAbove = false, receiverInFront = false;
   for (const auto& v : source) sourceAbove |= n.dot(v - centroids_[receiver]) > scale;
   for (const auto& v : receiverCorners) receiverInFront |= ns.dot(v - source[0]) > scale;
-  if (!sourceAbove || !receiverInFront) return 0.0;
+  if (!sourceAbove || !receiverInFront) return none;
 
   const std::vector<Eigen::Vector3d> polygon(source.begin(), source.end());
   const int points = options_.receiverPoints;
   const int m = options_.shadowRays;
   const int g = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(m))));
   Rng rng(streamKey(options_.seed, static_cast<uint64_t>(receiver), static_cast<uint64_t>(shooter)));
-  double sum = 0;
+  std::array<double, 3> atPoint = none;
   // A shadow edge crosses the element when one receiver point sees the patch in part, or when
   // some points see it and others do not (the edge passes between them).
   bool partial = false, someSee = false, someBlocked = false;
@@ -138,11 +161,12 @@ double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
     if (visible > 0 && visible < inFront) partial = true;
     someSee |= visible > 0;
     someBlocked |= visible < inFront;
-    sum += unoccluded * visible / inFront;
+    atPoint[k] = unoccluded * visible / inFront;
   }
   // Benign race: every writer stores 1.
   if ((partial || (someSee && someBlocked)) && (shadowCasters_.empty() || shadowCasters_[shooter])) partlyShadowed_[receiver] = 1;
-  return sum / points;
+  if (points == 1) atPoint[1] = atPoint[2] = atPoint[0];
+  return atPoint;
 }
 
 double AnalyticPatchShots::elementToShooterCached(int receiver, int shooter) const {
@@ -150,21 +174,27 @@ double AnalyticPatchShots::elementToShooterCached(int receiver, int shooter) con
   return rows_[shooter]->valueFor(receiver) * shooterArea_[shooter] / mesh_.area(receiver);
 }
 
+std::array<double, 3> AnalyticPatchShots::elementToShooterAtPointsCached(int receiver, int shooter) const {
+  const FormFactorRow* row = rows_[shooter].get();
+  if (!row) return elementToShooterAtPoints(receiver, shooter);
+  const double scale = shooterArea_[shooter] / mesh_.area(receiver);
+  const auto it = std::lower_bound(row->targets.begin(), row->targets.end(), receiver);
+  if (it == row->targets.end() || *it != receiver) return {0.0, 0.0, 0.0};
+  const size_t k = it - row->targets.begin();
+  if (row->points.empty()) return {row->values[k] * scale, row->values[k] * scale, row->values[k] * scale};
+  return {row->points[k][0] * scale, row->points[k][1] * scale, row->points[k][2] * scale};
+}
+
 const FormFactorRow& AnalyticPatchShots::powerFractions(int shooter) {
   if (!rows_[shooter]) {
     const auto start = std::chrono::steady_clock::now();
     const int n = mesh_.elementCount();
-    std::vector<double> fraction(n, 0.0);
+    std::vector<std::array<double, 3>> factors(n);
     tbb::parallel_for(tbb::blocked_range<int>(0, n, 16), [&](const tbb::blocked_range<int>& r) {
-      for (int j = r.begin(); j != r.end(); ++j)
-        fraction[j] = elementToShooter(j, shooter) * mesh_.area(j) / shooterArea_[shooter];
+      for (int j = r.begin(); j != r.end(); ++j) factors[j] = elementToShooterAtPoints(j, shooter);
     });
     auto row = std::make_unique<FormFactorRow>();
-    for (int j = 0; j < n; ++j)
-      if (fraction[j] > 0) {
-        row->targets.push_back(j);
-        row->values.push_back(fraction[j]);
-      }
+    for (int j = 0; j < n; ++j) appendEntry(*row, shooter, j, factors[j]);
     row->escaped = std::max(0.0, 1.0 - row->sum());
     rows_[shooter] = std::move(row);
     ++rowsComputed_;

@@ -48,6 +48,10 @@ class AnalyticPatchShots : public ShotRows {
   double elementToShooter(int receiver, int shooter) const;
   // The same, read from the shooter's row when it is already computed (no rays).
   double elementToShooterCached(int receiver, int shooter) const;
+  // The point factors whose mean is elementToShooter(): at each of the element's receiver points
+  // (the Gauss points, near corners 0, 1, 2 in PatchMesh::corners order; all three the centroid's
+  // value with one receiver point). Read from the shooter's row when it is already computed.
+  std::array<double, 3> elementToShooterAtPointsCached(int receiver, int shooter) const;
 
   int shooterCount() const override { return mesh_.shooterCount(); }
   int shooterOf(int element) const override { return mesh_.shooter(element); }
@@ -72,6 +76,10 @@ class AnalyticPatchShots : public ShotRows {
 
  private:
   void updateElementGeometry(int element);
+  std::array<double, 3> elementToShooterAtPoints(int receiver, int shooter) const;
+  // Adds receiver j's entry to a row of `shooter` from its point factors (none when zero).
+  void appendEntry(FormFactorRow& row, int shooter, int j,
+                   const std::array<double, 3>& pointFactors) const;
 
   const PatchMesh& mesh_;
   const RayCaster& rays_;

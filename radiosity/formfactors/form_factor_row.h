@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "radiosity/core/rgb.h"
@@ -14,10 +15,16 @@ namespace rad {
 // transmittance they picked up, per channel: then `tinted` holds, for each target, the
 // per-channel factor, and `values` the plain (untinted) fraction of rays. Rows that met no
 // specular surface leave `tinted` empty.
+//
+// Rows that sample each receiver at several points (analytic factors at the 3 Gauss points) may
+// keep the fraction at each point in `points` (same order as the element's receiver points;
+// values[k] is their mean), so a solver can hold a linear field per element, not just its mean.
+// Empty when the row does not resolve its receivers.
 struct FormFactorRow {
   std::vector<int> targets;
   std::vector<double> values;
   std::vector<Rgb> tinted;
+  std::vector<std::array<float, 3>> points;
   double escaped = 0;
 
   Rgb factor(size_t k) const { return tinted.empty() ? Rgb::all(values[k]) : tinted[k]; }

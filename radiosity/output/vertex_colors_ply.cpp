@@ -41,6 +41,29 @@ std::vector<Rgb> interpolateVertexRadiance(const VertexInterpolation& interpolat
   return radiance;
 }
 
+std::vector<Rgb> interpolateVertexRadiance(
+    const VertexInterpolation& interpolation, const std::vector<Rgb>& radiosityPerElement,
+    const std::vector<std::array<Rgb, 3>>& radiosityAtPoints) {
+  if (radiosityAtPoints.empty())
+    return interpolateVertexRadiance(interpolation, radiosityPerElement);
+  std::vector<std::array<Eigen::Vector3d, 3>> corners(radiosityAtPoints.size());
+  for (size_t e = 0; e < corners.size(); ++e) {
+    std::array<Eigen::Vector3d, 3> g;
+    for (int k = 0; k < 3; ++k) {
+      const Rgb& b = radiosityAtPoints[e][k];
+      g[k] = Eigen::Vector3d(b.r, b.g, b.b);
+    }
+    corners[e] = linearAtCorners(g);
+  }
+  const std::vector<Eigen::Vector3d> perVertex = interpolation.interpolateCorners(corners);
+  std::vector<Rgb> radiance(perVertex.size());
+  for (size_t v = 0; v < perVertex.size(); ++v) {
+    const Eigen::Vector3d b = perVertex[v].cwiseMax(0.0);  // no negative light past a shadow edge
+    radiance[v] = Rgb(b.x(), b.y(), b.z()) / M_PI;
+  }
+  return radiance;
+}
+
 void writeVertexColorsPly(std::ostream& out, const VertexInterpolation& interpolation,
                           const PatchMesh& mesh, const std::vector<Rgb>& radianceVertex,
                           const ToneMap& toneMap) {

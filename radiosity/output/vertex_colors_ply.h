@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <ostream>
 #include <vector>
 
@@ -15,6 +16,14 @@ namespace rad {
 // `radiosityPerElement` has one entry per element of the mesh the interpolation was built from.
 std::vector<Rgb> interpolateVertexRadiance(const VertexInterpolation& interpolation,
                                            const std::vector<Rgb>& radiosityPerElement);
+// The same from B at each element's 3 receiver points (Gauss points; SolveResult's
+// pointRadiosity): each element's linear field through them, evaluated at its corners and
+// averaged per output vertex (VertexInterpolation::interpolateCorners), clamped at zero where
+// the extrapolation overshoots past a shadow edge. Falls back to the element means when
+// `radiosityAtPoints` is empty.
+std::vector<Rgb> interpolateVertexRadiance(
+    const VertexInterpolation& interpolation, const std::vector<Rgb>& radiosityPerElement,
+    const std::vector<std::array<Rgb, 3>>& radiosityAtPoints);
 
 // Writes the solution as baked vertex colours: a binary_little_endian PLY 1.0 that MeshLab and
 // Blender read. Per vertex: float x y z, float nx ny nz, float radiance_r radiance_g radiance_b

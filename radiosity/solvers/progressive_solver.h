@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/SparseCore>
+#include <array>
 #include <functional>
 
 #include "radiosity/formfactors/shot_rows.h"
@@ -26,6 +27,10 @@ class ProgressiveSolver : public Solver {
   void step() override;
   double progress() const override { return unshotFraction_; }
   const std::vector<Rgb>& solution() const override { return solution_; }
+  // B at each element's 3 receiver points (in the order of the rows' `points`), whose mean is
+  // solution(): where the rows resolve their receivers, a linear field over each element; where
+  // they do not, the element's value three times.
+  const std::vector<std::array<Rgb, 3>>& pointSolution() const { return pointSolution_; }
   int iterations() const override { return shotCount_; }
   std::string progressMeasure() const override { return "unshot power / emitted power"; }
 
@@ -42,8 +47,9 @@ class ProgressiveSolver : public Solver {
   // shots so far sent it, B_e = E_e + rho_e sum_s F_es S_s with S_s the radiosity shooter s has
   // shot in total: exactly what it would hold had it existed from the start. Unshot power stays
   // with the shooters, so shooting goes on where it was.
+  // elementToShooter gives the form factor at each of the element's 3 receiver points.
   void elementsChanged(const std::vector<int>& changed,
-                       const std::function<double(int element, int shooter)>& elementToShooter);
+                       const std::function<std::array<double, 3>(int element, int shooter)>& elementToShooter);
   void setName(std::string name) { name_ = std::move(name); }
 
  private:
@@ -56,6 +62,7 @@ class ProgressiveSolver : public Solver {
   ShotRows& shots_;
   std::string name_ = "progressive";
   std::vector<Rgb> solution_;
+  std::vector<std::array<Rgb, 3>> pointSolution_;
   std::vector<Rgb> unshot_;  // per shooter, W
   std::vector<Rgb> shot_;    // per shooter: radiosity shot so far, W/m²
   std::vector<Rgb> received_;  // per shooter: reflected power its elements received so far, W

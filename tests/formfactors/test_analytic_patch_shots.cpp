@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "radiosity/formfactors/analytic_patch_shots.h"
+#include "radiosity/formfactors/point_to_polygon.h"
 #include "tests/support/analytic_form_factors.h"
 
 namespace rad {
@@ -64,6 +65,32 @@ TEST(AnalyticPatchShots, PowerFractionsAreReciprocalToTheReceiverFactors) {
   }
   // A shooter sends nothing to its own elements.
   for (int j : row.targets) EXPECT_NE(mesh.shooter(j), s);
+}
+
+TEST(AnalyticPatchShots, PointFactorsAreThePointToPolygonFactorsAtTheGaussPoints) {
+  // Nothing in the way: each receiver point's factor is the exact point-to-polygon factor there
+  // (visibility 1), in the order of the element's corners, and the element's factor is their mean.
+  const PatchMesh mesh = meshed({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                                {{{0, 1, 2, 3}, 0}, {{4, 7, 6, 5}, 1}}, 0.2, 0.05);
+  RayCaster rays(mesh);
+  AnalyticPatchShots shots(mesh, rays, {3, 4, 1});
+  const int s = mesh.shooter(mesh.elementCount() - 1);
+  const auto source = mesh.shooterCorners(s);
+  const std::vector<Eigen::Vector3d> polygon(source.begin(), source.end());
+  shots.powerFractions(s);
+  int compared = 0;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    if (mesh.patch(e) != 0) continue;
+    const auto c = mesh.corners(e);
+    const auto atPoints = shots.elementToShooterAtPointsCached(e, s);
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d x = (4 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6;
+      EXPECT_NEAR(atPoints[k], pointToPolygonFormFactor(x, mesh.normal(e), polygon), 1e-6 * atPoints[k]);
+    }
+    EXPECT_NEAR((atPoints[0] + atPoints[1] + atPoints[2]) / 3, shots.elementToShooter(e, s), 1e-6 * atPoints[0]);
+    ++compared;
+  }
+  EXPECT_GT(compared, 10);
 }
 
 TEST(AnalyticPatchShots, BlockerReducesTheFactorAndMarksThePartialShadow) {
@@ -137,6 +164,9 @@ TEST(AnalyticPatchShots, RowsUpdatedAfterRefinementEqualFreshRows) {
     const FormFactorRow& b = fresh.powerFractions(s);
     ASSERT_EQ(a.targets, b.targets) << "shooter " << s;
     for (size_t k = 0; k < a.values.size(); ++k) EXPECT_NEAR(a.values[k], b.values[k], 1e-14);
+    ASSERT_EQ(a.points.size(), a.targets.size());
+    ASSERT_EQ(b.points.size(), b.targets.size());
+    for (size_t k = 0; k < a.points.size(); ++k) EXPECT_EQ(a.points[k], b.points[k]) << "shooter " << s;
   }
 }
 

@@ -128,5 +128,55 @@ TEST(AdaptiveRefinement, TargetsGrowGeometricallyToTheBudget) {
   EXPECT_EQ(refinementTarget(100, 50, 0, 3), 100);  // a budget below the start refines nothing
 }
 
+// A field sampled at each element's 3 Gauss points (barycentric 2/3, 1/6, 1/6).
+template <class Field>
+std::vector<std::array<double, 3>> sampledAtGaussPoints(const PatchMesh& mesh, Field field) {
+  std::vector<std::array<double, 3>> values(mesh.elementCount());
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const auto c = mesh.corners(e);
+    for (int k = 0; k < 3; ++k)
+      values[e][k] = field((4 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6);
+  }
+  return values;
+}
+
+TEST(AdaptiveRefinement, GaussPointValuesShowASteepLinearFieldExactlyBordersIncluded) {
+  // The field that the element-mean estimate flags at the borders (one-sided means) is shown
+  // exactly from the Gauss points, so the point estimate is zero everywhere and nothing is split.
+  const PatchMesh mesh = unitSquare(1.0 / 256);
+  const auto values =
+      sampledAtGaussPoints(mesh, [](const Eigen::Vector3d& c) { return 1.0 + 10.0 * c.x(); });
+  for (double error : displayedPointError(mesh, values)) EXPECT_LT(error, 1e-9);
+  EXPECT_TRUE(selectForRefinement(mesh, values, {}, {0.01, 0, 0}).empty());
+}
+
+TEST(AdaptiveRefinement, GaussPointEstimateSeesCurvatureAndShrinksWithTheSquareOfTheSize) {
+  // L = 1 + 4 (x − 0.5)²: the planes of neighbouring elements disagree by about h²·L'' at their
+  // shared vertices. Halving the element size (a quarter of the area) divides it by about 4.
+  auto field = [](const Eigen::Vector3d& c) { return 1.0 + 4.0 * (c.x() - 0.5) * (c.x() - 0.5); };
+  auto largest = [&](double area) {
+    const PatchMesh mesh = unitSquare(area);
+    double worst = 0;
+    for (double error : displayedPointError(mesh, sampledAtGaussPoints(mesh, field)))
+      worst = std::max(worst, error);
+    return worst;
+  };
+  const double coarse = largest(1.0 / 64), fine = largest(1.0 / 256);
+  EXPECT_GT(coarse, 1e-3);
+  EXPECT_GT(coarse / fine, 3.0);
+  EXPECT_LT(coarse / fine, 5.0);
+}
+
+TEST(AdaptiveRefinement, GaussPointEstimateRefinesAStepAlongItsLineOnly) {
+  const PatchMesh mesh = unitSquare(1.0 / 64);
+  const double h = std::sqrt(2.0 / 64);
+  const auto values =
+      sampledAtGaussPoints(mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.37 ? 1.0 : 0.1; });
+  const std::vector<int> selected = selectForRefinement(mesh, values, {}, {0.1, 0, 0});
+  ASSERT_FALSE(selected.empty());
+  for (int e : selected)
+    EXPECT_LT(std::fabs(mesh.centroid(e).x() - 0.37), 1.5 * h) << "element " << e;
+}
+
 }  // namespace
 }  // namespace rad

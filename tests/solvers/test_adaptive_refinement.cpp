@@ -129,6 +129,30 @@ TEST_F(AdaptiveCornell, ContinuedSolveEqualsAFreshSolveOnTheRefinedMesh) {
   // Both stopped with at most 1e-5 of the power unshot; what that can still change is
   // rho/(1 − rho) of it, below 3e-5 for rho <= 0.725.
   EXPECT_LT(relativeToEmission(result_->problem, difference), 1e-4);
+  // The same for the values at the receiver points, which the refinement carried over and
+  // re-gathered for the changed elements.
+  ASSERT_EQ(result_->pointRadiosity.size(), static_cast<size_t>(mesh.elementCount()));
+  for (int k = 0; k < 3; ++k) {
+    for (int e = 0; e < mesh.elementCount(); ++e)
+      difference[e] = fresh.pointSolution()[e][k] - result_->pointRadiosity[e][k];
+    EXPECT_LT(relativeToEmission(result_->problem, difference), 1e-4) << "point " << k;
+  }
+}
+
+TEST_F(AdaptiveCornell, ReceiverPointValuesAverageToTheElementValues) {
+  // Each element's value is the mean of its point factors' contributions; the points are kept in
+  // single precision, so the means agree to about 1e-6 of the value.
+  const PatchMesh& mesh = *result_->mesh;
+  ASSERT_EQ(result_->pointRadiosity.size(), static_cast<size_t>(mesh.elementCount()));
+  bool someVary = false;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const auto& p = result_->pointRadiosity[e];
+    const Rgb mean = (p[0] + p[1] + p[2]) / 3.0;
+    const Rgb& b = result_->radiosity[e];
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], b[c], 1e-5 * b[c] + 1e-12) << "element " << e;
+    someVary |= std::fabs(p[0].r - p[1].r) > 1e-3 * b.r;
+  }
+  EXPECT_TRUE(someVary);  // the points resolve the field inside the elements
 }
 
 }  // namespace
