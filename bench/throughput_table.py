@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Turns bench/throughput's Google Benchmark JSON into a table per thread count: form-factor rays/s,
 raw Embree rays/s on the same rays, their ratio, and the form factors' speed-up and parallel
-efficiency against one thread.
+efficiency against one thread. With repetitions (--benchmark_repetitions=N), the medians.
 
     /usr/bin/python3 bench/throughput_table.py THROUGHPUT.json OUT.csv
 """
@@ -16,7 +16,10 @@ def main():
         sys.exit(__doc__)
     runs = json.load(open(sys.argv[1]))["benchmarks"]
     rate = {}
+    repeated = any(r.get("run_type") == "aggregate" for r in runs)
     for r in runs:
+        if repeated and r.get("aggregate_name") != "median":
+            continue
         name, threads = r["name"].split("/")[0], int(r["name"].split("threads:")[1].split("/")[0])
         rate[(name, threads)] = r["rays_per_s"]
     threads = sorted({t for _, t in rate})
