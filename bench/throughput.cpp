@@ -4,13 +4,15 @@
 // rtcIntersect1 on a plain Embree scene of the same triangles built with the same settings as
 // RayCaster's (robust, high quality), so the ratio of the two rates is what the form-factor code
 // (sampling, hit bookkeeping, row assembly) costs on top of Embree. rawEmbreeDefaultBuild shows
-// what Embree's faster, non-robust default build would give on the same rays.
+// what Embree's faster, non-robust default build would give on the same rays. ratioInTurn gives
+// the ratio from the two taken in turn, for machines shared with other work.
 //   throughput [--benchmark_format=json]   (scene: RADIOSITY_BENCH_SCENE, default Cornell box)
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <memory>
 #include <thread>
@@ -100,45 +102,74 @@ Setup& setup() {
   return s;
 }
 
+// One pass of the form-factor rows: rows in parallel (as gatherMatrix does), each row's rays in
+// parallel inside computeRow.
+void formFactorPass(const Setup& s) {
+  tbb::parallel_for(0, s.mesh->elementCount(),
+                    [&](int e) { benchmark::DoNotOptimize(s.method->computeRow(e)); });
+}
+
+// One pass of the same rays with rtcIntersect1 (incoherent context, as RayCaster uses).
+void rawPass(const Setup& s, RTCScene scene) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, s.rays.size(), 4096),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      RTCIntersectContext context;
+                      rtcInitIntersectContext(&context);
+                      context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+                      for (size_t k = r.begin(); k != r.end(); ++k) {
+                        RTCRayHit h = s.rays[k];
+                        h.ray.tnear = 0;
+                        h.ray.tfar = std::numeric_limits<float>::infinity();
+                        h.ray.mask = ~0u;
+                        h.ray.flags = 0;
+                        h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                        rtcIntersect1(scene, &context, &h);
+                        benchmark::DoNotOptimize(h.hit.primID);
+                      }
+                    });
+}
+
 void formFactorRows(benchmark::State& state) {
   Setup& s = setup();
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(0));
   uint64_t rays = 0;
   for (auto _ : state) {
-    // Rows in parallel (as gatherMatrix does), each row's rays in parallel inside computeRow.
-    tbb::parallel_for(0, s.mesh->elementCount(),
-                      [&](int e) { benchmark::DoNotOptimize(s.method->computeRow(e)); });
+    formFactorPass(s);
     rays += uint64_t(s.mesh->elementCount()) * kRaysPerElement;
   }
   state.counters["rays_per_s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
   state.counters["elements"] = s.mesh->elementCount();
 }
 
-// Casts exactly the rows' rays with rtcIntersect1 (incoherent context, as RayCaster uses).
 void castRaw(benchmark::State& state, RTCScene scene) {
   Setup& s = setup();
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(0));
   uint64_t rays = 0;
   for (auto _ : state) {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, s.rays.size(), 4096),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                        RTCIntersectContext context;
-                        rtcInitIntersectContext(&context);
-                        context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-                        for (size_t k = r.begin(); k != r.end(); ++k) {
-                          RTCRayHit h = s.rays[k];
-                          h.ray.tnear = 0;
-                          h.ray.tfar = std::numeric_limits<float>::infinity();
-                          h.ray.mask = ~0u;
-                          h.ray.flags = 0;
-                          h.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                          rtcIntersect1(scene, &context, &h);
-                          benchmark::DoNotOptimize(h.hit.primID);
-                        }
-                      });
+    rawPass(s, scene);
     rays += s.rays.size();
   }
   state.counters["rays_per_s"] = benchmark::Counter(double(rays), benchmark::Counter::kIsRate);
+}
+
+// The ratio itself from the two passes taken in turn inside each iteration (form-factor rows,
+// then raw Embree on the same rays, wall time each): load from other work on a shared machine
+// that drifts over seconds then weighs on both alike, unlike two benchmarks run one after the
+// other.
+void ratioInTurn(benchmark::State& state) {
+  Setup& s = setup();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, state.range(0));
+  using Clock = std::chrono::steady_clock;
+  double formFactorSeconds = 0, rawSeconds = 0;
+  for (auto _ : state) {
+    const auto t0 = Clock::now();
+    formFactorPass(s);
+    const auto t1 = Clock::now();
+    rawPass(s, s.raw);
+    formFactorSeconds += std::chrono::duration<double>(t1 - t0).count();
+    rawSeconds += std::chrono::duration<double>(Clock::now() - t1).count();
+  }
+  state.counters["ratio"] = rawSeconds / formFactorSeconds;
 }
 
 // The baseline of the ratio: the same BVH settings as the form factors' RayCaster.
@@ -165,6 +196,11 @@ BENCHMARK(rawEmbree)
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(rawEmbreeDefaultBuild)
+    ->Apply(threadCounts)
+    ->ArgName("threads")
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(ratioInTurn)
     ->Apply(threadCounts)
     ->ArgName("threads")
     ->UseRealTime()

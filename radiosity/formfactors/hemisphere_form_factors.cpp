@@ -25,7 +25,11 @@ HemisphereFormFactors::HemisphereFormFactors(const PatchMesh& mesh, const RayCas
       options_.rayMultiplier.size() != static_cast<size_t>(mesh.elementCount()))
     throw std::invalid_argument("one ray multiplier per element expected");
   normals_.resize(mesh.elementCount());
-  for (int e = 0; e < mesh.elementCount(); ++e) normals_[e] = mesh.normal(e);
+  frontNormals_.resize(3 * static_cast<size_t>(mesh.elementCount()));
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    normals_[e] = mesh.normal(e);
+    for (int d = 0; d < 3; ++d) frontNormals_[3 * e + d] = static_cast<float>(normals_[e][d]);
+  }
 }
 
 namespace {
@@ -33,13 +37,6 @@ namespace {
 // SplitMix64 output k of the generator keyed by `key`: counter-based, so any ray's random numbers
 // come straight from (row key, ray index), on any thread, in any order.
 inline uint64_t splitMix(uint64_t key, uint64_t k) { return mix64(key + k * 0x9e3779b97f4a7c15ull); }
-// Two uniforms in (0, 1) from one 64-bit value (32 bits each: ample inside a stratum).
-inline void twoUniforms(uint64_t bits, double& a, double& b) {
-  constexpr double kScale = 1.0 / 4294967296.0;
-  a = (static_cast<double>(bits >> 32) + 0.5) * kScale;
-  b = (static_cast<double>(bits & 0xffffffffull) + 0.5) * kScale;
-}
-
 // Uniform integer in [0, n) without a division in the common case (Lemire 2019, unbiased).
 inline uint32_t below(Rng& rng, uint32_t n) {
   uint64_t m = static_cast<uint64_t>(rng.next()) * n;
@@ -50,25 +47,14 @@ inline uint32_t below(Rng& rng, uint32_t n) {
   return static_cast<uint32_t>(m >> 32);
 }
 
-// Cosine-weighted direction about +z as cosineWeightedDirection(u1, u2), with the azimuth's
-// cosine and sine from the float sincos (a third of the double's cost; the directions go to
-// Embree as floats anyway), renormalised by one Newton step of 1/sqrt(c² + s²) about 1: float
-// rounding leaves c² + s² within 1e-6 of 1, so the step brings the length to 1 within 1e-12.
-inline Eigen::Vector3d cosineWeightedDirectionFast(double u1, double u2) {
-  float sf, cf;
-  ::sincosf(static_cast<float>(2.0 * M_PI * u2), &sf, &cf);
-  const double c = cf, s = sf;
-  const double sinTheta = std::sqrt(std::max(0.0, 1.0 - u1)) * (1.5 - 0.5 * (c * c + s * s));
-  return {sinTheta * c, sinTheta * s, std::sqrt(u1)};
-}
-
 // Scratch space for assembling rows, one per thread, reused across rows: a hit count per element
-// (all zero between rows) and the elements with a non-zero count. Only used in the serial
-// assembly, which makes no TBB call: a thread waiting in a parallel loop may start another row,
-// but never inside an assembly.
+// plus one slot for escaped rays (all zero between rows), the distinct slots hit, and a bitmap of
+// them. Only used in the serial assembly, which makes no TBB call: a thread waiting in a parallel
+// loop may start another row, but never inside an assembly.
 struct AssemblyScratch {
   std::vector<uint32_t> count;
-  std::vector<int> touched;
+  std::vector<uint32_t> touched;
+  std::vector<uint64_t> bits;
 };
 thread_local AssemblyScratch t_scratch;
 
@@ -96,55 +82,160 @@ thread_local std::vector<std::vector<int>> RowBuffer::free_;
 
 }  // namespace
 
+// A block of a row's rays, structure of arrays: the uniforms, the rays as cast (floats in the
+// caster's frame), the origins in double, and what each ray hit.
+struct HemisphereFormFactors::RayBlock {
+  static constexpr int kSize = 64;
+  int count = 0;
+  alignas(64) int32_t jitter[4][kSize];  // 23 random bits per uniform
+  alignas(64) int32_t directionCell[kSize];  // stratum (y << 16 | x) of the direction grid
+  alignas(64) float u[4][kSize];  // direction (cos² theta, azimuth turn), position on the triangle
+  alignas(64) double origin[3][kSize];
+  alignas(64) float castOrigin[3][kSize];
+  alignas(64) float direction[3][kSize];
+  alignas(64) int element[kSize];
+  alignas(64) float distance[kSize];
+};
+
 HemisphereFormFactors::RowSampler::RowSampler(const HemisphereFormFactors& owner, int element,
                                               std::vector<int>& positionCell)
-    : owner_(owner), count_(owner.raysForRow(element)), frame_(owner.normals_[element]),
-      corners_(owner.mesh_.corners(element)), positionCell_(positionCell) {
+    : count_(owner.raysForRow(element)), positionCell_(positionCell) {
+  const Frame frame(owner.normals_[element]);
+  const auto corners = owner.mesh_.corners(element);
+  const Eigen::Vector3d base = owner.rays_.liftOff(corners[0], frame.normal, frame.normal) - owner.rays_.centre();
+  for (int d = 0; d < 3; ++d) {
+    tangent_[d] = static_cast<float>(frame.tangent[d]);
+    bitangent_[d] = static_cast<float>(frame.bitangent[d]);
+    normal_[d] = static_cast<float>(frame.normal[d]);
+    base_[d] = base[d];
+    edge1_[d] = corners[1][d] - corners[0][d];
+    edge2_[d] = corners[2][d] - corners[0][d];
+  }
   // The only serial part: a shuffle pairing direction strata with position strata, from the
   // row's own stream. A g×g jittered grid stratifies the first g² rays; the rest are plain random.
   Rng rng(streamKey(owner.options_.seed, static_cast<uint64_t>(element)));
   key_ = (static_cast<uint64_t>(rng.next()) << 32) | rng.next();
   grid_ = static_cast<int>(std::sqrt(static_cast<double>(count_)));
+  if (grid_ >= 1 << 15) throw std::invalid_argument("a form-factor row must have fewer than 2^30 rays");
   inverseGrid_ = 1.0 / grid_;
   const int cells = grid_ * grid_;
   positionCell_.resize(cells);
-  std::iota(positionCell_.begin(), positionCell_.end(), 0);
+  for (int y = 0, k = 0; y < grid_; ++y)
+    for (int x = 0; x < grid_; ++x) positionCell_[k++] = y << 16 | x;  // strata packed as fill() reads them
   for (int k = cells - 1; k > 0; --k) std::swap(positionCell_[k], positionCell_[below(rng, k + 1)]);
 }
 
-void HemisphereFormFactors::RowSampler::ray(int k, Eigen::Vector3d& origin, Eigen::Vector3d& direction) const {
-  double s0, s1, s2, s3;
-  twoUniforms(splitMix(key_, 2 * static_cast<uint64_t>(k)), s0, s1);
-  twoUniforms(splitMix(key_, 2 * static_cast<uint64_t>(k) + 1), s2, s3);
-  if (k < grid_ * grid_) {
-    const int p = positionCell_[k];
-    // k / grid without an integer division: (k + 0.5) / grid is never within rounding of an integer.
-    const int ky = static_cast<int>((k + 0.5) * inverseGrid_), py = static_cast<int>((p + 0.5) * inverseGrid_);
-    s0 = ((k - ky * grid_) + s0) * inverseGrid_;  // direction stratum k
-    s1 = (ky + s1) * inverseGrid_;
-    s2 = ((p - py * grid_) + s2) * inverseGrid_;  // shuffled position stratum
-    s3 = (py + s3) * inverseGrid_;
+void HemisphereFormFactors::RowSampler::fill(int begin, RayBlock& b) const {
+  const int n = b.count;
+  // The uniforms: four per ray from two counter-based draws (23 bits each), jittered inside the
+  // ray's direction stratum and its shuffled position stratum; rays past the g×g grid are plain.
+  const int stratified = std::min(n, std::max(0, grid_ * grid_ - begin));
+  int x = 0, y = 0;
+  if (stratified > 0) {
+    y = begin / grid_;
+    x = begin - y * grid_;
   }
-  direction = frame_.toWorld(cosineWeightedDirectionFast(s0, s1));
-  origin = owner_.rays_.liftOff(uniformPointOnTriangle(corners_, s2, s3), frame_.normal, frame_.normal);
+  for (int i = 0; i < n; ++i) {
+    const uint64_t h0 = splitMix(key_, 2 * static_cast<uint64_t>(begin + i));
+    const uint64_t h1 = splitMix(key_, 2 * static_cast<uint64_t>(begin + i) + 1);
+    b.jitter[0][i] = static_cast<int32_t>(h0 >> 41);
+    b.jitter[1][i] = static_cast<int32_t>((h0 & 0xffffffffu) >> 9);
+    b.jitter[2][i] = static_cast<int32_t>(h1 >> 41);
+    b.jitter[3][i] = static_cast<int32_t>((h1 & 0xffffffffu) >> 9);
+    b.directionCell[i] = y << 16 | x;
+    if (++x == grid_) {
+      x = 0;
+      ++y;
+    }
+  }
+  // (2j + 1) / 2^24: exact in float, strictly inside (0, 1).
+  constexpr float kUnit = 1.0f / 16777216.0f;
+  const float inverseGrid = static_cast<float>(inverseGrid_);
+  const int* positionCell = positionCell_.data() + begin;
+  for (int i = 0; i < stratified; ++i) {
+    const int32_t d = b.directionCell[i], p = positionCell[i];
+    b.u[0][i] = (static_cast<float>(d & 0xffff) + static_cast<float>(2 * b.jitter[0][i] + 1) * kUnit) * inverseGrid;
+    b.u[1][i] = (static_cast<float>(d >> 16) + static_cast<float>(2 * b.jitter[1][i] + 1) * kUnit) * inverseGrid;
+    b.u[2][i] = (static_cast<float>(p & 0xffff) + static_cast<float>(2 * b.jitter[2][i] + 1) * kUnit) * inverseGrid;
+    b.u[3][i] = (static_cast<float>(p >> 16) + static_cast<float>(2 * b.jitter[3][i] + 1) * kUnit) * inverseGrid;
+  }
+  for (int c = 0; c < 4; ++c)
+    for (int i = stratified; i < n; ++i) b.u[c][i] = static_cast<float>(2 * b.jitter[c][i] + 1) * kUnit;
+  // Cosine-weighted directions (cosineWeightedDirection, in float: Embree takes floats), mapped
+  // by the element's frame.
+  const float t0 = tangent_[0], t1 = tangent_[1], t2 = tangent_[2];
+  const float b0 = bitangent_[0], b1 = bitangent_[1], b2 = bitangent_[2];
+  const float n0 = normal_[0], n1 = normal_[1], n2 = normal_[2];
+  for (int i = 0; i < n; ++i) {
+    const float u0 = b.u[0][i];
+    const float cosTheta = std::sqrt(u0), sinTheta = std::sqrt(1.0f - u0);
+    float c, s;
+    turnCosSin(b.u[1][i], c, s);
+    const float x = sinTheta * c, y = sinTheta * s;
+    b.direction[0][i] = x * t0 + y * b0 + cosTheta * n0;
+    b.direction[1][i] = x * t1 + y * b1 + cosTheta * n1;
+    b.direction[2][i] = x * t2 + y * b2 + cosTheta * n2;
+  }
+  // Uniform origins on the triangle (uniformPointOnTriangle), lifted off it.
+  const std::array<double, 3> base = base_, e1 = edge1_, e2 = edge2_;  // locals: no aliasing
+  for (int i = 0; i < n; ++i) {
+    const double u2 = b.u[2][i], u3 = b.u[3][i];
+    const double su = std::sqrt(u2);
+    const double w1 = su * (1.0 - u3), w2 = su * u3;
+    for (int d = 0; d < 3; ++d) {
+      b.origin[d][i] = base[d] + w1 * e1[d] + w2 * e2[d];
+      b.castOrigin[d][i] = static_cast<float>(b.origin[d][i]);
+    }
+  }
 }
 
-int HemisphereFormFactors::frontHit(int element, const RayHit& hit, const Eigen::Vector3d& direction) const {
+void HemisphereFormFactors::frontHits(int element, const RayBlock& b, int* target) const {
   // Only the front of a surface receives: a back-face hit is absorbed and counts as escaped.
-  return (hit.hit() && hit.element != element && normals_[hit.element].dot(direction) < 0) ? hit.element : -1;
+  for (int i = 0; i < b.count; ++i) {
+    const int t = b.element[i];
+    int front = -1;
+    if (t >= 0 && t != element) {
+      const float* n = &frontNormals_[3 * static_cast<size_t>(t)];
+      if (n[0] * b.direction[0][i] + n[1] * b.direction[1][i] + n[2] * b.direction[2][i] < 0) front = t;
+    }
+    target[i] = front;
+  }
 }
+
+namespace {
+// Runs body(begin, block) over a row's rays in blocks, in parallel (each block on one thread).
+template <class Body>
+void forEachBlock(int count, Body&& body) {
+  constexpr int kSize = 64;
+  tbb::parallel_for(tbb::blocked_range<int>(0, count, kSize), [&](const tbb::blocked_range<int>& range) {
+    for (int begin = range.begin(); begin < range.end(); begin += kSize)
+      body(begin, std::min(kSize, range.end() - begin));
+  });
+}
+}  // namespace
 
 std::vector<RowRay> HemisphereFormFactors::traceRow(int element) const {
   std::vector<int> cells;
   const RowSampler sampler(*this, element, cells);
   std::vector<RowRay> rays(sampler.count());
-  tbb::parallel_for(tbb::blocked_range<int>(0, sampler.count(), 64), [&](const tbb::blocked_range<int>& range) {
-    for (int k = range.begin(); k != range.end(); ++k) {
-      RowRay& ray = rays[k];
-      sampler.ray(k, ray.origin, ray.direction);
-      const RayHit hit = rays_.closestHit(ray.origin, ray.direction);
-      ray.distance = hit.distance;
-      ray.target = frontHit(element, hit, ray.direction);
+  const Eigen::Vector3d& centre = rays_.centre();
+  forEachBlock(sampler.count(), [&](int begin, int count) {
+    RayBlock b;
+    b.count = count;
+    sampler.fill(begin, b);
+    const float* origin[3] = {b.castOrigin[0], b.castOrigin[1], b.castOrigin[2]};
+    const float* direction[3] = {b.direction[0], b.direction[1], b.direction[2]};
+    rays_.closestHits(count, origin, direction, b.element, b.distance);
+    int target[RayBlock::kSize];
+    frontHits(element, b, target);
+    for (int i = 0; i < count; ++i) {
+      RowRay& ray = rays[begin + i];
+      ray.origin = centre + Eigen::Vector3d(b.origin[0][i], b.origin[1][i], b.origin[2][i]);
+      const Eigen::Vector3d d(b.direction[0][i], b.direction[1][i], b.direction[2][i]);
+      const double length = d.norm();  // 1 within float rounding; distances are along d
+      ray.direction = d / length;
+      ray.distance = b.distance[i] * length;
+      ray.target = target[i];
     }
   });
   return rays;
@@ -155,22 +246,32 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
   const RowSampler sampler(*this, element, cells.get());
   const int n = sampler.count();
   std::vector<int>& firstHit = hits.get();
-  firstHit.assign(n, -1);  // each ray writes only its own entry
+  firstHit.resize(n);  // each ray writes only its own entry
   const bool extended = !options_.specular.empty();
   std::vector<Rgb> weight(extended ? n : 0);
-  tbb::parallel_for(tbb::blocked_range<int>(0, n, 64), [&](const tbb::blocked_range<int>& range) {
-    for (int k = range.begin(); k != range.end(); ++k) {
-      Eigen::Vector3d origin, direction;
-      sampler.ray(k, origin, direction);
-      if (!extended) {
-        firstHit[k] = frontHit(element, rays_.closestHit(origin, direction), direction);
-        continue;
-      }
+  forEachBlock(n, [&](int begin, int count) {
+    RayBlock b;
+    b.count = count;
+    sampler.fill(begin, b);
+    if (!extended) {
+      const float* origin[3] = {b.castOrigin[0], b.castOrigin[1], b.castOrigin[2]};
+      const float* direction[3] = {b.direction[0], b.direction[1], b.direction[2]};
+      rays_.closestHits(count, origin, direction, b.element, b.distance);
+      frontHits(element, b, &firstHit[begin]);
+      return;
+    }
+    const Eigen::Vector3d& centre = rays_.centre();
+    for (int i = 0; i < count; ++i) {
+      const int k = begin + i;
+      const Eigen::Vector3d origin = centre + Eigen::Vector3d(b.origin[0][i], b.origin[1][i], b.origin[2][i]);
+      const Eigen::Vector3d direction =
+          Eigen::Vector3d(b.direction[0][i], b.direction[1][i], b.direction[2][i]).normalized();
       // Fresnel choices draw from the ray's own stream: reproducible on any thread count.
       Rng pathRng(streamKey(options_.seed, static_cast<uint64_t>(element), static_cast<uint64_t>(k) + 1));
       int rays = 0;
       const SpecularPathEnd end = traceThroughSpecular(rays_, normals_, options_.specular, origin, direction,
                                                        element, pathRng, options_.maxSpecularDepth, &rays);
+      firstHit[k] = -1;
       if (end.element >= 0 && end.element != element) {
         firstHit[k] = end.element;
         weight[k] = end.weight;
@@ -183,36 +284,45 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
 
 FormFactorRow HemisphereFormFactors::assemble(const std::vector<int>& firstHit) const {
   // Hit counts per element in a dense array, then the touched elements in order: sorted when
-  // they are few, read off the dense array when a sort would cost more than a pass over it.
+  // they are few next to the elements, else read off a bitmap of them (one bit per element, so a
+  // pass over it costs elements / 64 words). The counting and marking loops have no branches
+  // that depend on the hits, which are random.
   AssemblyScratch& scratch = t_scratch;
   const int n = static_cast<int>(firstHit.size());
-  scratch.count.resize(mesh_.elementCount(), 0);
-  scratch.touched.clear();
-  int escaped = 0;
+  const uint32_t escapedSlot = static_cast<uint32_t>(mesh_.elementCount());
+  scratch.count.resize(escapedSlot + 1, 0);
+  scratch.touched.resize(n + 1);
+  uint32_t* count = scratch.count.data();
+  uint32_t* touched = scratch.touched.data();
+  size_t m = 0;
   for (int t : firstHit) {
-    if (t < 0) {
-      ++escaped;
-    } else if (scratch.count[t]++ == 0) {
-      scratch.touched.push_back(t);
-    }
+    const uint32_t slot = t < 0 ? escapedSlot : static_cast<uint32_t>(t);
+    touched[m] = slot;
+    m += count[slot]++ == 0;
   }
-  const size_t m = scratch.touched.size();
   FormFactorRow row;
-  row.targets.reserve(m);
-  row.values.reserve(m);
   const double perRay = 1.0 / n;
-  row.escaped = escaped * perRay;
-  auto emit = [&](int t) {
-    row.targets.push_back(t);
-    row.values.push_back(scratch.count[t] * perRay);
-    scratch.count[t] = 0;
+  row.escaped = count[escapedSlot] * perRay;
+  if (count[escapedSlot] > 0) --m;  // the escaped slot is no target
+  count[escapedSlot] = 0;
+  row.targets.resize(m);
+  row.values.resize(m);
+  size_t j = 0;
+  auto emit = [&](uint32_t t) {
+    row.targets[j] = static_cast<int>(t);
+    row.values[j++] = count[t] * perRay;
+    count[t] = 0;
   };
-  if (m * 16 < scratch.count.size()) {
-    std::sort(scratch.touched.begin(), scratch.touched.end());
-    for (int t : scratch.touched) emit(t);
+  if (m * 512 < escapedSlot) {
+    std::sort(touched, touched + m + (row.escaped > 0));
+    for (size_t k = 0; k < m; ++k) emit(touched[k]);  // the escaped slot, if any, sorts last
   } else {
-    for (int t = 0; row.targets.size() < m; ++t)
-      if (scratch.count[t] > 0) emit(t);
+    scratch.bits.assign(escapedSlot / 64 + 1, 0);
+    uint64_t* bits = scratch.bits.data();
+    for (size_t k = 0; k < m + (row.escaped > 0); ++k) bits[touched[k] >> 6] |= uint64_t(1) << (touched[k] & 63);
+    for (size_t w = 0; j < m; ++w)
+      for (uint64_t word = bits[w]; word != 0 && j < m; word &= word - 1)
+        emit(static_cast<uint32_t>(64 * w + __builtin_ctzll(word)));
   }
   return row;
 }

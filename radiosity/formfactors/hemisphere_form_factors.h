@@ -61,26 +61,31 @@ class HemisphereFormFactors {
   uint64_t specularRays() const { return extraRays_.load(); }
 
  private:
+  struct RayBlock;
   // The rays of one row. Their random numbers come from a counter-based generator keyed by the
   // row's own stream, so ray k is the same on any thread; only the shuffle that pairs direction
-  // strata with position strata is drawn serially, once per row.
+  // strata with position strata is drawn serially, once per row. Rays are made a block at a time
+  // in structure-of-arrays form, so the square roots, the azimuth's sine and cosine and the
+  // frame and triangle maps run as vector loops.
   class RowSampler {
    public:
     RowSampler(const HemisphereFormFactors& owner, int element, std::vector<int>& positionCell);
     int count() const { return count_; }
-    void ray(int k, Eigen::Vector3d& origin, Eigen::Vector3d& direction) const;
+    // Rays begin … begin + block.count - 1, in the caster's frame (see RayCaster::centre()).
+    void fill(int begin, RayBlock& block) const;
 
    private:
-    const HemisphereFormFactors& owner_;
     int count_, grid_ = 0;
     double inverseGrid_ = 0;
-    Frame frame_;
-    std::array<Eigen::Vector3d, 3> corners_;
-    std::vector<int>& positionCell_;
+    std::array<float, 3> tangent_, bitangent_, normal_;  // the element's frame, as Embree's floats
+    // Origins are placed in double (base: corner 0 minus the BVH centre, lifted off the surface),
+    // then rounded once, as RayCaster::closestHit rounds them.
+    std::array<double, 3> base_, edge1_, edge2_;
+    std::vector<int>& positionCell_;  // ray k's position stratum, y << 16 | x
     uint64_t key_ = 0;
   };
-  // The element a ray from `element` counts for: the one whose front it hit first, or -1.
-  int frontHit(int element, const RayHit& hit, const Eigen::Vector3d& direction) const;
+  // Each ray's first hit in a cast block: the element whose front it hit first, or -1.
+  void frontHits(int element, const RayBlock& block, int* target) const;
   // Rows from each ray's first hit (-1: escaped): plain counts, or with each path's tint.
   FormFactorRow assemble(const std::vector<int>& firstHit) const;
   FormFactorRow assembleTinted(const std::vector<int>& firstHit, const std::vector<Rgb>& weight) const;
@@ -88,7 +93,8 @@ class HemisphereFormFactors {
   const PatchMesh& mesh_;
   const RayCaster& rays_;
   HemisphereOptions options_;
-  std::vector<Eigen::Vector3d> normals_;  // per element, looked up once per ray hit
+  std::vector<Eigen::Vector3d> normals_;  // per element, for specular continuation
+  std::vector<float> frontNormals_;       // x, y, z per element as floats, looked up once per hit
   mutable std::atomic<uint64_t> extraRays_{0};
 };
 

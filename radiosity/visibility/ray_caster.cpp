@@ -137,6 +137,33 @@ RayHit RayCaster::closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3
   return result;
 }
 
+void RayCaster::closestHits(int count, const float* const origin[3], const float* const direction[3],
+                            int* element, float* distance) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit;
+  rayHit.ray.time = 0.0f;
+  rayHit.ray.mask = 0xFFFFFFFFu;
+  rayHit.ray.id = 0;
+  rayHit.ray.flags = 0;
+  for (int k = 0; k < count; ++k) {
+    rayHit.ray.org_x = origin[0][k];
+    rayHit.ray.org_y = origin[1][k];
+    rayHit.ray.org_z = origin[2][k];
+    rayHit.ray.dir_x = direction[0][k];
+    rayHit.ray.dir_y = direction[1][k];
+    rayHit.ray.dir_z = direction[2][k];
+    rayHit.ray.tnear = 0.0f;
+    rayHit.ray.tfar = std::numeric_limits<float>::infinity();
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &rayHit);
+    const bool hit = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    element[k] = hit ? static_cast<int>(rayHit.hit.primID) : -1;
+    distance[k] = rayHit.ray.tfar;  // stays infinite on a miss
+  }
+}
+
 bool RayCaster::occluded(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                          double maxDistance, double time) const {
   RTCIntersectContext context;

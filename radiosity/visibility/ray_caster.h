@@ -50,6 +50,15 @@ class RayCaster {
   bool occluded(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double maxDistance,
                 double time = 0) const;
 
+  // The batch form of closestHit for callers that make rays in bulk (form-factor rows): rays in
+  // the caster's own frame (scene coordinates minus centre(), as Embree's floats), as separate
+  // coordinate arrays, all cast with one intersect context and no per-ray conversion. Writes
+  // each ray's closest element (-1: none) and its distance (infinite when none).
+  void closestHits(int count, const float* const origin[3], const float* const direction[3],
+                   int* element, float* distance) const;
+  // The point the BVH is centred on: scene coordinates minus this are what Embree sees.
+  const Eigen::Vector3d& centre() const { return centre_; }
+
   // Offset that lifts a ray origin off a surface: a small fraction of the scene's size, never a
   // fixed constant, so scenes in millimetres and in kilometres behave alike.
   double surfaceOffset() const { return offset_; }
