@@ -164,9 +164,9 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
     }
     const Rgb& rho = hit.material->diffuse;
     if (mayContinue && rho.maxComponent() > 0 && hit.distance < elementSize_[hit.element]) {
-      // Closer than the element's size (a corner, a contact): the element's one value is
-      // furthest from the light at this point here, so gather once more from the point: one
-      // shadow ray and one cosine ray (read from the solution), weighed by MIS as at the eye hit.
+      // Closer than the element's size (a corner, a contact), where the element's one value is
+      // least like the light at this very point: gather once more from the point, one shadow
+      // ray and one cosine ray (read from the solution), weighed by MIS as at the eye hit.
       const Point2 light{rng.uniform(), rng.uniform()}, bounce{rng.uniform(), rng.uniform()};
       const Rgb incoming =
           lightSample(hit, light, counts) +
