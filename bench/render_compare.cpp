@@ -6,6 +6,16 @@
 //   render_compare average A.exr B.exr OUT.exr      → OUT = (A+B)/2; prints the relative RMSE of
 //       OUT's noise, estimated as ½·rmse(A, B) (two independent renders of the same image)
 //   render_compare pfm IMAGE.exr OUT.pfm             → the same pixels as a PFM (for numpy plots)
+//   render_compare relmse IMAGE.exr REFERENCE.exr REFERENCE_VARIANCE.exr
+//       → per-pixel relative RMSE sqrt(mean over pixels and channels of ((a−r)² − v)/(r² + ε)),
+//       v the variance of the reference's own pixel mean (its noise, removed: for independent a
+//       and reference, E[(a−ref)²] = E[(a−r)²] + Var(ref)), ε = (0.1·mean(r))²; then the same
+//       without removing v, ε, and the reference's own noise over the "surfaces" pixels of
+//       `rmse`, sqrt(Σ v / Σ r²) there (to remove from that metric in quadrature)
+//   render_compare halves A.exr B.exr OUT.exr OUT_VARIANCE.exr
+//       → OUT = (A+B)/2 and, per pixel, the variance of that mean, estimated without bias as
+//       (A−B)²/4 (A, B independent renders of the same image with the same settings); prints the
+//       image-wide relative RMSE of OUT's noise and its per-pixel relative RMSE (ε as above)
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -72,6 +82,27 @@ std::vector<char> surfaceMask(const rad::ImageRgb& r) {
   return mask;
 }
 
+// ε of the per-pixel relative error: a pixel darker than a tenth of the image's mean counts its
+// error against that tenth instead of its own value (so black or nearly black pixels do not blow
+// the mean up), and the metric does not depend on the radiance's units.
+double relativeEpsilon(const rad::ImageRgb& r) {
+  const double floor = 0.1 * meanValue(r);
+  return floor * floor;
+}
+
+// Mean over pixels and channels of (squared error − reference variance) / (r² + ε).
+double relativeMse(const rad::ImageRgb& a, const rad::ImageRgb& r, const rad::ImageRgb* variance,
+                   double epsilon) {
+  double sum = 0;
+  for (size_t p = 0; p < r.pixels.size(); ++p)
+    for (int c = 0; c < 3; ++c) {
+      const double d = a.pixels[p][c] - r.pixels[p][c];
+      const double v = variance ? variance->pixels[p][c] : 0.0;
+      sum += (d * d - v) / (r.pixels[p][c] * r.pixels[p][c] + epsilon);
+    }
+  return sum / (3.0 * r.pixels.size());
+}
+
 void requireSameSize(const rad::ImageRgb& a, const rad::ImageRgb& b) {
   if (a.width != b.width || a.height != b.height) throw std::runtime_error("image sizes differ");
 }
@@ -99,6 +130,40 @@ int main(int argc, char** argv) {
       std::printf("%.6f\n", 0.5 * relativeRmse(a, b));
       return 0;
     }
+    if (mode == "relmse" && argc == 5) {
+      const rad::ImageRgb a = rad::readExr(argv[2]), r = rad::readExr(argv[3]), v = rad::readExr(argv[4]);
+      requireSameSize(a, r);
+      requireSameSize(v, r);
+      const double epsilon = relativeEpsilon(r);
+      // The noise-removed mean may come out below 0 when a is as noisy as the reference: report 0.
+      const std::vector<char> surfaces = surfaceMask(r);
+      double noise2 = 0, ref2 = 0;
+      for (size_t p = 0; p < r.pixels.size(); ++p)
+        if (surfaces[p]) {
+          noise2 += v.pixels[p].sum();
+          ref2 += (r.pixels[p] * r.pixels[p]).sum();
+        }
+      std::printf("%.6f %.6f %.6g %.6f\n", std::sqrt(std::max(0.0, relativeMse(a, r, &v, epsilon))),
+                  std::sqrt(relativeMse(a, r, nullptr, epsilon)), epsilon, std::sqrt(noise2 / ref2));
+      return 0;
+    }
+    if (mode == "halves" && argc == 6) {
+      const rad::ImageRgb a = rad::readExr(argv[2]), b = rad::readExr(argv[3]);
+      requireSameSize(a, b);
+      rad::ImageRgb mean(a.width, a.height), variance(a.width, a.height);
+      for (size_t p = 0; p < a.pixels.size(); ++p) {
+        mean.pixels[p] = 0.5 * (a.pixels[p] + b.pixels[p]);
+        const rad::Rgb d = a.pixels[p] - b.pixels[p];
+        variance.pixels[p] = 0.25 * (d * d);
+      }
+      rad::writeExr(argv[4], mean);
+      rad::writeExr(argv[5], variance);
+      // Per-pixel: the mean's own relative noise, sqrt(mean of v/(r² + ε)) = the relmse of a
+      // noiseless image against it.
+      std::printf("%.6f %.6f\n", 0.5 * relativeRmse(a, b),
+                  std::sqrt(-relativeMse(mean, mean, &variance, relativeEpsilon(mean))));
+      return 0;
+    }
     if (mode == "pfm" && argc == 4) {
       // Portable float map: little-endian scale (negative), rows stored bottom to top.
       const rad::ImageRgb a = rad::readExr(argv[2]);
@@ -114,7 +179,8 @@ int main(int argc, char** argv) {
       if (std::fclose(f) != 0) throw std::runtime_error(std::string("cannot write ") + argv[3]);
       return 0;
     }
-    std::fprintf(stderr, "usage: render_compare rmse IMAGE REF | average A B OUT | pfm IMAGE OUT\n");
+    std::fprintf(stderr, "usage: render_compare rmse IMAGE REF | relmse IMAGE REF REF_VARIANCE | average A B OUT | "
+                 "halves A B OUT OUT_VARIANCE | pfm IMAGE OUT\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -6,7 +6,7 @@
 namespace rad {
 
 EmitterSampler::EmitterSampler(const Scene& scene, const PatchMesh& mesh)
-    : mesh_(mesh), pdfArea_(mesh.elementCount(), 0.0), radiance_(mesh.elementCount()) {
+    : pdfArea_(mesh.elementCount(), 0.0), radiance_(mesh.elementCount()) {
   double total = 0;
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const Rgb ke = scene.materials[mesh.material(e)].emission;
@@ -14,6 +14,8 @@ EmitterSampler::EmitterSampler(const Scene& scene, const PatchMesh& mesh)
     const double power = mesh.area(e) * ke.sum();
     if (!(power > 0)) continue;
     elements_.push_back(e);
+    corners_.push_back(mesh.corners(e));
+    normals_.push_back(mesh.normal(e));
     total += power;
     cdf_.push_back(total);
   }
@@ -44,11 +46,11 @@ EmitterSample EmitterSampler::sample(double u0, double u1, double u2) const {
 EmitterSample EmitterSampler::pointOn(size_t k, double u1, double u2) const {
   EmitterSample s;
   s.element = elements_[k];
-  const auto c = mesh_.corners(s.element);
+  const auto& c = corners_[k];
   // Uniform point on a triangle (square-root warp).
   const double r = std::sqrt(u1);
   s.position = (1 - r) * c[0] + r * (1 - u2) * c[1] + r * u2 * c[2];
-  s.normal = mesh_.normal(s.element);
+  s.normal = normals_[k];
   s.radiance = radiance_[s.element];
   s.pdfArea = pdfArea_[s.element];
   return s;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "meshing/patch_mesh.h"
@@ -37,8 +38,11 @@ class EmitterSampler {
  private:
   EmitterSample pointOn(size_t k, double u1, double u2) const;  // on elements_[k]
 
-  const PatchMesh& mesh_;
   std::vector<int> elements_;
+  // Per emitter element, copied from the mesh once: reading them through its half-edge
+  // structure at every sample was a visible share of a render.
+  std::vector<std::array<Eigen::Vector3d, 3>> corners_;
+  std::vector<Eigen::Vector3d> normals_;
   std::vector<double> cdf_;      // over elements_
   std::vector<double> pdfArea_;  // per mesh element
   std::vector<Rgb> radiance_;    // per mesh element

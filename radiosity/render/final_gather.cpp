@@ -3,7 +3,12 @@
 #include <cmath>
 #include <string>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "radiosity/core/rng.h"
 #include "radiosity/render/scattering.h"
+#include "radiosity/render/sobol_sampler.h"
 
 namespace rad {
 
@@ -24,6 +29,47 @@ FinalGather::FinalGather(const RenderScene& scene, const std::vector<Rgb>& radio
     perElement[e] = {radiance_[e].r, radiance_[e].g, radiance_[e].b};
   }
   if (options_.gatherRays == 0) vertexRadiance_ = interpolation_.interpolate(perElement);
+  if (options_.gatherRays == 0) return;
+  elementSize_.resize(n);
+  for (int e = 0; e < n; ++e) elementSize_[e] = std::sqrt(scene.mesh().area(e));
+  // Not clamped at 0: where the solution's reflected light is below the element's mean shadow-ray
+  // share, the point's own share makes up for it on average.
+  const std::vector<Rgb> direct = meanLightSample();
+  indirect_.resize(n);
+  for (int e = 0; e < n; ++e) indirect_[e] = reflected_[e] - scene.material(e).diffuse * direct[e];
+}
+
+std::vector<Rgb> FinalGather::meanLightSample() const {
+  // Stratified over the element (one Sobol 2D dimension) and over the emitters (another): 256
+  // points, as many as the solve's default hemisphere rays per element, so the mean's noise is of
+  // the order of the solution's own.
+  constexpr int kPoints = 256;
+  const PatchMesh& mesh = scene_.mesh();
+  const int n = mesh.elementCount();
+  std::vector<Rgb> mean(n);
+  if (scene_.emitters().empty()) return mean;
+  tbb::parallel_for(tbb::blocked_range<int>(0, n), [&](const tbb::blocked_range<int>& range) {
+    RayCounts unused;
+    for (int e = range.begin(); e < range.end(); ++e) {
+      const Material& m = scene_.material(e);
+      if (m.isSpecular() || m.diffuse.maxComponent() == 0) continue;
+      const auto c = mesh.corners(e);
+      SurfaceHit hit;
+      hit.element = e;
+      hit.normal = mesh.normal(e);
+      hit.front = true;
+      hit.material = &m;
+      Rgb sum;
+      for (int k = 0; k < kPoints; ++k) {
+        const Point2 p = SobolSampler::point(k, streamKey(0x4d45414e, e, 1));
+        const double r = std::sqrt(p.x);
+        hit.position = (1 - r) * c[0] + r * (1 - p.y) * c[1] + r * p.y * c[2];
+        sum += lightSample(hit, SobolSampler::point(k, streamKey(0x4d45414e, e, 2)), unused);
+      }
+      mean[e] = sum / kPoints;
+    }
+  });
+  return mean;
 }
 
 std::string FinalGather::name() const {
@@ -47,26 +93,27 @@ double FinalGather::misWeight(double pdfA, double pdfB) {
   return a / (a + b);
 }
 
+Rgb FinalGather::lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts) const {
+  const EmitterSample s = scene_.emitters().sample(u.x, u.y);
+  if (s.element < 0 || s.element == hit.element) return {};
+  Eigen::Vector3d w = s.position - hit.position;
+  const double d2 = w.squaredNorm();
+  w /= std::sqrt(d2);
+  const double cosX = hit.normal.dot(w), cosY = -s.normal.dot(w);
+  if (cosX <= 0 || cosY <= 0) return {};  // behind the receiver, or the emitter's back
+  ++counts.shadow;
+  if (scene_.occluded(scene_.spawn(hit, w), s.position)) return {};
+  const double lightPdf = s.pdfArea * d2 / cosY;  // per solid angle
+  return s.radiance * (cosX / lightPdf * misWeight(lightPdf, cosX / M_PI) / M_PI);
+}
+
 Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts) const {
   thread_local std::vector<Point2> points;
-  const EmitterSampler& lights = scene_.emitters();
   const int n = options_.gatherRays;
   sampler.get2DArray(n, points);
   Rgb sum;
-  for (int k = 0; k < n; ++k) {
-    const EmitterSample s = lights.sample(points[k].x, points[k].y);
-    if (s.element < 0 || s.element == hit.element) continue;
-    Eigen::Vector3d w = s.position - hit.position;
-    const double d2 = w.squaredNorm();
-    w /= std::sqrt(d2);
-    const double cosX = hit.normal.dot(w), cosY = -s.normal.dot(w);
-    if (cosX <= 0 || cosY <= 0) continue;  // behind the receiver, or the emitter's back
-    ++counts.shadow;
-    if (scene_.occluded(scene_.spawn(hit, w), s.position)) continue;
-    const double lightPdf = s.pdfArea * d2 / cosY;  // per solid angle
-    sum += s.radiance * (cosX / lightPdf * misWeight(lightPdf, cosX / M_PI));
-  }
-  return sum / (n * M_PI);  // irradiance / π: times ρ it is the reflected radiance
+  for (int k = 0; k < n; ++k) sum += lightSample(hit, points[k], counts);
+  return sum / n;  // irradiance / π: times ρ it is the reflected radiance
 }
 
 Rgb FinalGather::gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts) const {
@@ -76,14 +123,14 @@ Rgb FinalGather::gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts&
   Rgb sum;
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector3d d = cosineDirection(hit.normal, points[k].x, points[k].y);
-    sum += secondaryRadiance(hit, d, sampler.rng(), counts);
+    sum += secondaryRadiance(hit, d, sampler.rng(), counts, true);
   }
   return sum /
          n;  // cosine-weighted mean of incoming radiance: times ρ it is the reflected radiance
 }
 
 Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direction, Rng& rng,
-                                   RayCounts& counts) const {
+                                   RayCounts& counts, bool mayContinue) const {
   Eigen::Vector3d origin = scene_.spawn(from, direction);
   const double bsdfPdf = from.normal.dot(direction) / M_PI;
   Rgb weight = Rgb::all(1.0);
@@ -106,13 +153,33 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
     if (!hit.front) return {};  // back faces absorb, as in the radiosity pass
     // Through mirrors and glass (E S+ D) shadow rays cannot reach the emitter: take all of B/π.
     if (viaSpecular) return weight * radiance_[hit.element];
-    // Directly: the solution's reflected part, plus the emission's share of the MIS pair.
-    Rgb value = reflected_[hit.element];
+    // Directly: the emission's share of the MIS pair with the shadow rays at `from`, plus the
+    // reflected light.
+    Rgb value;
     if (hit.material->isEmitter()) {
       const double cosY = -hit.normal.dot(direction);
       const double lightPdf =
           scene_.emitters().pdfArea(hit.element) * hit.distance * hit.distance / cosY;
       value += hit.material->emission * misWeight(bsdfPdf, lightPdf);
+    }
+    const Rgb& rho = hit.material->diffuse;
+    if (mayContinue && rho.maxComponent() > 0 && hit.distance < elementSize_[hit.element]) {
+      // Closer than the element's size (a corner, a contact), where the element's one value is
+      // least like the light at this very point: gather once more from the point, one shadow
+      // ray and one cosine ray (read from the solution), weighed by MIS as at the eye hit.
+      const Point2 light{rng.uniform(), rng.uniform()}, bounce{rng.uniform(), rng.uniform()};
+      const Rgb incoming =
+          lightSample(hit, light, counts) +
+          secondaryRadiance(hit, cosineDirection(hit.normal, bounce.x, bounce.y), rng, counts, false);
+      return weight * (value + rho * incoming);
+    }
+    // Otherwise the solution's reflected part, (B − E)/π of the element, with its mean shadow-ray
+    // share of the direct light replaced by the point's own.
+    if (rho.maxComponent() > 0) {
+      const Point2 light{rng.uniform(), rng.uniform()};
+      value += indirect_[hit.element] + rho * lightSample(hit, light, counts);
+    } else {
+      value += reflected_[hit.element];
     }
     return weight * value;
   }

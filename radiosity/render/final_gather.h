@@ -11,7 +11,10 @@ struct FinalGatherOptions {
   // 0: show the interpolated radiosity B/π at the first diffuse hit (preview). N > 0: direct
   // light by N shadow rays to the emitters plus N cosine-weighted gather rays into the
   // solution's reflected part (B − E)/π; the two share the direct light by multiple importance
-  // sampling (a gather ray that reaches an emitter adds its MIS-weighted Ke).
+  // sampling (a gather ray that reaches an emitter adds its MIS-weighted Ke). A gather ray that
+  // lands on a diffuse surface closer than the size of the element it hits (a corner, a
+  // contact) gathers once more from that point (one shadow and one cosine ray, MIS-weighted in
+  // the same way) instead of taking the element's value.
   int gatherRays = 64;
   int maxSpecularDepth = 16;  // mirror/glass bounces an eye or gather ray may take
 };
@@ -43,15 +46,25 @@ class FinalGather : public Integrator {
                   RayCounts& counts) const;  // ∫ L_e cos dω / π
   Rgb gatherLight(const SurfaceHit& hit, Sampler& sampler,
                   RayCounts& counts) const;  // mean incoming reflected L
-  // Incoming radiance along a gather ray leaving `from`.
+  // One shadow ray to the point `u` picks on the emitters: its irradiance / π, MIS-weighted
+  // against a cosine-sampled ray.
+  Rgb lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts) const;
+  // Per element: the mean of lightSample over its area (stratified points).
+  std::vector<Rgb> meanLightSample() const;
+  // Incoming radiance along a gather ray leaving `from`; `mayContinue`: a landing too close
+  // gathers once more (the continuation itself reads the solution wherever it lands).
   Rgb secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direction, Rng& rng,
-                        RayCounts& counts) const;
+                        RayCounts& counts, bool mayContinue) const;
   static double misWeight(double pdfA, double pdfB);
 
   const RenderScene& scene_;
   FinalGatherOptions options_;
   std::vector<Rgb> radiance_;   // B/π per element
   std::vector<Rgb> reflected_;  // (B − E)/π per element
+  // (B − E)/π − ρ·(the element's mean of lightSample) per element: the solution's reflected
+  // light less its shadow-ray share, which a gather ray's landing point takes at the point.
+  std::vector<Rgb> indirect_;
+  std::vector<double> elementSize_;  // √area per element: a gather ray landing closer continues
   VertexInterpolation interpolation_;
   std::vector<Eigen::Vector3d> vertexRadiance_;  // B/π per output vertex (gather 0)
 };
