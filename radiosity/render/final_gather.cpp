@@ -93,7 +93,8 @@ double FinalGather::misWeight(double pdfA, double pdfB) {
   return a / (a + b);
 }
 
-Rgb FinalGather::lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts) const {
+Rgb FinalGather::lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts,
+                             double gathersPerLight) const {
   const EmitterSample s = scene_.emitters().sample(u.x, u.y);
   if (s.element < 0 || s.element == hit.element) return {};
   Eigen::Vector3d w = s.position - hit.position;
@@ -104,15 +105,16 @@ Rgb FinalGather::lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts)
   ++counts.shadow;
   if (scene_.occluded(scene_.spawn(hit, w), s.position)) return {};
   const double lightPdf = s.pdfArea * d2 / cosY;  // per solid angle
-  return s.radiance * (cosX / lightPdf * misWeight(lightPdf, cosX / M_PI) / M_PI);
+  return s.radiance * (cosX / lightPdf * misWeight(lightPdf, gathersPerLight * cosX / M_PI) / M_PI);
 }
 
 Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts) const {
   thread_local std::vector<Point2> points;
-  const int n = options_.gatherRays;
+  const int n = lightRays();
   sampler.get2DArray(n, points);
   Rgb sum;
-  for (int k = 0; k < n; ++k) sum += lightSample(hit, points[k], counts);
+  const double gathersPerLight = double(options_.gatherRays) / n;
+  for (int k = 0; k < n; ++k) sum += lightSample(hit, points[k], counts, gathersPerLight);
   return sum / n;  // irradiance / π: times ρ it is the reflected radiance
 }
 
@@ -160,7 +162,10 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
       const double cosY = -hit.normal.dot(direction);
       const double lightPdf =
           scene_.emitters().pdfArea(hit.element) * hit.distance * hit.distance / cosY;
-      value += hit.material->emission * misWeight(bsdfPdf, lightPdf);
+      // From the eye hit the pair is gatherRays cosine rays against lightRays shadow rays; from
+      // a continuation, one against one.
+      const double gathersPerLight = mayContinue ? double(options_.gatherRays) / lightRays() : 1.0;
+      value += hit.material->emission * misWeight(gathersPerLight * bsdfPdf, lightPdf);
     }
     const Rgb& rho = hit.material->diffuse;
     if (mayContinue && rho.maxComponent() > 0 && hit.distance < elementSize_[hit.element]) {

@@ -16,6 +16,11 @@ struct FinalGatherOptions {
   // contact) gathers once more from that point (one shadow and one cosine ray, MIS-weighted in
   // the same way) instead of taking the element's value.
   int gatherRays = 64;
+  // Shadow rays per diffuse eye hit; 0: as many as gatherRays. Fewer than gatherRays pays where
+  // the gather's indirect part, not the direct light, holds most of the variance (the Cornell
+  // box: README, "Error against time"); the MIS weights count the rays of each kind (power
+  // heuristic with n·pdf), so any count stays unbiased.
+  int lightRays = 0;
   int maxSpecularDepth = 16;  // mirror/glass bounces an eye or gather ray may take
 };
 
@@ -48,7 +53,10 @@ class FinalGather : public Integrator {
                   RayCounts& counts) const;  // mean incoming reflected L
   // One shadow ray to the point `u` picks on the emitters: its irradiance / π, MIS-weighted
   // against a cosine-sampled ray.
-  Rgb lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts) const;
+  // `gathersPerLight`: cosine rays per shadow ray in the MIS pair (power heuristic with counts).
+  Rgb lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts,
+                  double gathersPerLight = 1.0) const;
+  int lightRays() const { return options_.lightRays > 0 ? options_.lightRays : options_.gatherRays; }
   // Per element: the mean of lightSample over its area (stratified points).
   std::vector<Rgb> meanLightSample() const;
   // Incoming radiance along a gather ray leaving `from`; `mayContinue`: a landing too close
