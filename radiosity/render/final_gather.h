@@ -57,8 +57,14 @@ class FinalGather : public Integrator {
   Rgb lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts,
                   double gathersPerLight = 1.0) const;
   int lightRays() const { return options_.lightRays > 0 ? options_.lightRays : options_.gatherRays; }
-  // Per element: the mean of lightSample over its area (stratified points).
-  std::vector<Rgb> meanLightSample() const;
+  // Per element: the mean of lightSample over its area (stratified points), and whether every
+  // one of those points saw the emitters alike (all lit, or none: no shadow edge, no emitter
+  // plane crossing the element).
+  struct ElementLight {
+    std::vector<Rgb> mean;
+    std::vector<char> uniform;
+  };
+  ElementLight meanLightSample() const;
   // Incoming radiance along a gather ray leaving `from`; `mayContinue`: a landing too close
   // gathers once more (the continuation itself reads the solution wherever it lands).
   Rgb secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direction, Rng& rng,
@@ -72,6 +78,9 @@ class FinalGather : public Integrator {
   // (B − E)/π − ρ·(the element's mean of lightSample) per element: the solution's reflected
   // light less its shadow-ray share, which a gather ray's landing point takes at the point.
   std::vector<Rgb> indirect_;
+  // Per element: its points all saw the emitters alike, so a landing there takes the element's
+  // mean shadow-ray share instead of casting its own shadow ray.
+  std::vector<char> uniformLight_;
   std::vector<double> elementSize_;  // √area per element: a gather ray landing closer continues
   VertexInterpolation interpolation_;
   std::vector<Eigen::Vector3d> vertexRadiance_;  // B/π per output vertex (gather 0)
