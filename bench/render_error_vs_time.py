@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Relative error against the converged path-traced reference versus wall time, Cornell box 256x256.
 
-In one run: `radiosity render` with --method radiosity at several (gather, spp) settings and
+In one run: `radiosity render` with --method radiosity at several (gather, light rays, spp) settings and
 --method path at several sample counts, interleaved (path, radiosity, path, ...) so that both
 methods run under the same load of this shared machine; each render.exr is compared with
 data/reference/cornell_box_path.exr (bench/render_compare). Writes render_error_vs_time.csv, a
@@ -60,7 +60,9 @@ TARGET = 0.02
 SURFACE_LEVEL = 0.05  # a level both methods bracket on the surfaces metric, for their time ratio
 SOLVE_SIZES = [(1500, 1024), (500, 256), (200, 128)]  # (elements, rays per element)
 
-RADIOSITY = [(1, 16), (1, 64), (1, 256), (1, 512), (4, 16), (4, 64), (4, 128)]  # (gather, spp)
+# (gather rays, light rays per eye hit (0: as many as gather rays, the default), spp)
+RADIOSITY = [(1, 0, 16), (1, 0, 64), (1, 0, 256), (1, 0, 512), (4, 0, 16), (4, 0, 64), (4, 0, 128),
+             (4, 2, 16), (4, 2, 64), (4, 2, 128)]
 PATH = [4, 8, 16, 32, 64, 128, 256]  # spp
 
 
@@ -243,29 +245,34 @@ def main():
                "surface_rmse_raw": surface_raw, "surface_mean_ratio": surface_ratio,
                "reused_solution": bool(report.get("radiosity", {}).get("reused_saved_solution", False))}
         rows.append(row)
-        print(f'{method:9s} gather {gather:3d} spp {spp:4d}: {seconds:7.2f} s '
+        print(f'{method:9s} gather {str(gather):>3s} spp {spp:4d}: {seconds:7.2f} s '
               f'({row["seconds_with_solve"]:6.2f} s with solve), per-pixel {pixel:.4f}, '
               f'image-wide {error:.4f}, mean ratio {ratio:.4f}', file=sys.stderr)
 
     with tempfile.TemporaryDirectory() as work:
         # The solve, once: a fresh render that keeps its solution.
         solved_dir = os.path.join(work, "solved")
-        first_g, first_spp = RADIOSITY[0]
+        first_g, _, first_spp = RADIOSITY[0]
         fresh = render(a.build, "radiosity", {"--gather": first_g, "--spp": first_spp},
                        solved_dir, 1)
         solve_seconds = fresh["time_seconds"]["solve"]
         print(f"solve (fresh, kept for reuse): {solve_seconds:.2f} s, "
               f'{fresh["radiosity"]["elements"]} elements', file=sys.stderr)
 
-        def radiosity_row(gather, spp):
-            out = os.path.join(work, f"radiosity_g{gather}_s{spp}")
+        def radiosity_row(gather, light_rays, spp):
+            out = os.path.join(work, f"radiosity_g{gather}_l{light_rays}_s{spp}")
             os.makedirs(out)
             for name in ("solution.csv", "solution.json"):
                 shutil.copy(os.path.join(solved_dir, name), out)
-            report = render(a.build, "radiosity", {"--gather": gather, "--spp": spp}, out, a.repeats)
+            options = {"--gather": gather, "--spp": spp}
+            if light_rays:
+                options["--light-rays"] = light_rays
+            report = render(a.build, "radiosity", options, out, a.repeats)
             if not report["radiosity"]["reused_saved_solution"]:
                 sys.exit("the saved solution was not reused")
-            add("radiosity", gather, spp, report, os.path.join(out, "best.exr"), solve_seconds)
+            # The setting's label groups its rows (tables, plot, times to a level).
+            label = f"{gather}" if not light_rays else f"{gather}, {light_rays} light rays"
+            add("radiosity", label, spp, report, os.path.join(out, "best.exr"), solve_seconds)
 
         def path_row(spp):
             out = os.path.join(work, f"path_s{spp}")

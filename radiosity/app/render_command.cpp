@@ -38,6 +38,7 @@ struct RenderCommandOptions {
   std::string solverName = "progressive";
   std::string method = "radiosity";
   int gather = kRenderGather;
+  int lightRays = 0;  // 0: as many as gather
   int spp = 0;  // 0: the method's default
   std::string cameraFile;
   std::vector<double> position, lookAt, up;
@@ -114,6 +115,7 @@ void runRender(RenderCommandOptions& o) {
   std::optional<ExpressionBinning> pathFilter;
   if (!o.paths.empty()) pathFilter.emplace(PathExpression::parse(o.paths));
   if (o.gather < 0) throw InputError("--gather must be >= 0");
+  if (o.lightRays < 0) throw InputError("--light-rays must be >= 0");
   if (o.spp < 0) throw InputError("--spp must be >= 1");
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
   const bool radiosity = method.needsSolve;
@@ -150,7 +152,7 @@ void runRender(RenderCommandOptions& o) {
 
   std::unique_ptr<Integrator> integrator = method.makeIntegrator(
       MethodInputs{renderScene, view.radiosity, o.gather, &camera,
-                   o.mis == "balance" ? MisHeuristic::Balance : MisHeuristic::Power});
+                   o.mis == "balance" ? MisHeuristic::Balance : MisHeuristic::Power, o.lightRays});
   if (radiosity && o.gather == 0)
     skip("final gather", "--gather 0: interpolated radiosity preview");
   if (o.method == "bdpt" && camera.lensRadius > 0)
@@ -249,6 +251,7 @@ void runRender(RenderCommandOptions& o) {
         {"focus_distance", camera.focusDistance}}},
       {"samples_per_pixel", spp},
       {"gather_rays", radiosity ? o.gather : 0},
+      {"light_rays", radiosity && o.gather > 0 ? (o.lightRays > 0 ? o.lightRays : o.gather) : 0},
       {"seed", o.solve.seed},
       {"threads", threads},
       {"rays",
@@ -342,6 +345,10 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
          "--gather", o->gather,
          "Final-gather rays (and shadow rays) per diffuse eye hit; 0: interpolated preview")
       ->default_val(o->gather);
+  cmd->add_option("--light-rays", o->lightRays,
+                  "Shadow rays to the emitters per diffuse eye hit of the final gather, MIS-weighted "
+                  "against the --gather rays by their counts; 0: as many as --gather")
+      ->default_val(o->lightRays);
   cmd->add_option("--spp", o->spp, "Samples per pixel (default: the method's, see --method)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--camera", o->cameraFile, "Camera JSON file (default: <scene>.camera.json)");

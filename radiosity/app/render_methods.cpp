@@ -36,7 +36,7 @@ const std::vector<RenderMethod>& renderMethods() {
        true, false, 16,
        [](const MethodInputs& in) {
          return std::make_unique<FinalGather>(in.scene, *in.radiosity,
-                                              FinalGatherOptions{in.gather});
+                                              FinalGatherOptions{in.gather, in.lightRays});
        }},
   };
   return methods;

@@ -30,6 +30,7 @@ struct MethodInputs {
   int gather = kRenderGather;                   // final-gather rays per diffuse eye hit
   const Camera* camera = nullptr;               // bdpt: light tracing connects to the camera
   MisHeuristic mis = MisHeuristic::Power;       // bdpt
+  int lightRays = 0;  // final gather: shadow rays per diffuse eye hit; 0: as many as `gather`
 };
 
 // One way to solve the rendering equation for an image, and the light paths it captures in

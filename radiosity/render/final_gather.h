@@ -16,6 +16,11 @@ struct FinalGatherOptions {
   // contact) gathers once more from that point (one shadow and one cosine ray, MIS-weighted in
   // the same way) instead of taking the element's value.
   int gatherRays = 64;
+  // Shadow rays per diffuse eye hit; 0: as many as gatherRays. Fewer than gatherRays pays where
+  // the gather's indirect part, not the direct light, holds most of the variance (the Cornell
+  // box: README, "Error against time"); the MIS weights count the rays of each kind (power
+  // heuristic with n·pdf), so any count stays unbiased.
+  int lightRays = 0;
   int maxSpecularDepth = 16;  // mirror/glass bounces an eye or gather ray may take
 };
 
@@ -48,9 +53,18 @@ class FinalGather : public Integrator {
                   RayCounts& counts) const;  // mean incoming reflected L
   // One shadow ray to the point `u` picks on the emitters: its irradiance / π, MIS-weighted
   // against a cosine-sampled ray.
-  Rgb lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts) const;
-  // Per element: the mean of lightSample over its area (stratified points).
-  std::vector<Rgb> meanLightSample() const;
+  // `gathersPerLight`: cosine rays per shadow ray in the MIS pair (power heuristic with counts).
+  Rgb lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts,
+                  double gathersPerLight = 1.0) const;
+  int lightRays() const { return options_.lightRays > 0 ? options_.lightRays : options_.gatherRays; }
+  // Per element: the mean of lightSample over its area (stratified points), and whether every
+  // one of those points saw the emitters alike (all lit, or none: no shadow edge, no emitter
+  // plane crossing the element).
+  struct ElementLight {
+    std::vector<Rgb> mean;
+    std::vector<char> uniform;
+  };
+  ElementLight meanLightSample() const;
   // Incoming radiance along a gather ray leaving `from`; `mayContinue`: a landing too close
   // gathers once more (the continuation itself reads the solution wherever it lands).
   Rgb secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direction, Rng& rng,
@@ -64,6 +78,9 @@ class FinalGather : public Integrator {
   // (B − E)/π − ρ·(the element's mean of lightSample) per element: the solution's reflected
   // light less its shadow-ray share, which a gather ray's landing point takes at the point.
   std::vector<Rgb> indirect_;
+  // Per element: its points all saw the emitters alike, so a landing there takes the element's
+  // mean shadow-ray share instead of casting its own shadow ray.
+  std::vector<char> uniformLight_;
   std::vector<double> elementSize_;  // √area per element: a gather ray landing closer continues
   VertexInterpolation interpolation_;
   std::vector<Eigen::Vector3d> vertexRadiance_;  // B/π per output vertex (gather 0)

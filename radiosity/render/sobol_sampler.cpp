@@ -15,24 +15,25 @@ uint32_t reverseBits(uint32_t x) {
 
 // Nested uniform (Owen) scramble of a 32-bit binary fraction: each bit is flipped by a hash of
 // the bits above it. Vegdahl's improved Laine–Karras hash works on the reversed bits, where a
-// multiplication carries information only from lower to higher bits.
-uint32_t owenScramble(uint32_t x, uint32_t seed) {
-  x = reverseBits(x);
+// multiplication carries information only from lower to higher bits. This is the hash on the
+// reversed bits: owenScramble(x) = reverseBits(laineKarras(reverseBits(x))), and point() keeps its
+// values reversed where the next step wants them so that it reverses 4 times instead of 7.
+uint32_t laineKarras(uint32_t x, uint32_t seed) {
   x ^= x * 0x3d20adeau;
   x += seed;
   x *= (seed >> 16) | 1u;
   x ^= x * 0x05526c56u;
   x ^= x * 0x53a22864u;
-  return reverseBits(x);
+  return x;
 }
 
 // Generator matrix of Sobol's second dimension (primitive polynomial x + 1): column k is
 // v_k = v_{k−1} xor (v_{k−1} >> 1), v_0 = 1/2. The first dimension is the van der Corput
 // radical inverse (the bit reversal of the index). The product matrix × index is the xor of the
-// columns of the index's set bits; the scrambled index has bits up to the 32nd, so it is done a
-// byte at a time from tables (table[j][b]: the xor of the columns 8j… of byte value b) rather
-// than a bit at a time, which took a third of a final-gather render.
-const std::array<std::array<uint32_t, 256>, 4>& sobolSecondDimension() {
+// columns of the index's set bits; it is done a byte at a time from tables rather than a bit at a
+// time, which took a third of a final-gather render. The tables give the product bit-reversed
+// (table[j][b]: the reversed xor of the columns 8j… of byte value b), as the scramble takes it.
+const std::array<std::array<uint32_t, 256>, 4>& sobolSecondDimensionReversed() {
   static const std::array<std::array<uint32_t, 256>, 4> tables = [] {
     std::array<uint32_t, 32> v{};
     v[0] = 1u << 31;
@@ -41,7 +42,7 @@ const std::array<std::array<uint32_t, 256>, 4>& sobolSecondDimension() {
     for (int j = 0; j < 4; ++j)
       for (uint32_t b = 0; b < 256; ++b)
         for (int k = 0; k < 8; ++k)
-          if (b & (1u << k)) t[j][b] ^= v[8 * j + k];
+          if (b & (1u << k)) t[j][b] ^= reverseBits(v[8 * j + k]);
     return t;
   }();
   return tables;
@@ -63,12 +64,13 @@ Point2 SobolSampler::point(uint32_t index, uint64_t key) {
   const uint64_t a = mix64(key), b = mix64(key ^ 0x9e3779b97f4a7c15ull);
   // Scrambling the index (as a fraction) permutes the sequence by aligned blocks: the first 2^m
   // indices go to one aligned block of 2^m Sobol points, which is again a (0,m,2)-net.
-  const uint32_t i = owenScramble(index, static_cast<uint32_t>(a));
-  const auto& t = sobolSecondDimension();
-  const uint32_t y = t[0][i & 0xffu] ^ t[1][(i >> 8) & 0xffu] ^ t[2][(i >> 16) & 0xffu] ^ t[3][i >> 24];
-  const uint32_t x = reverseBits(i);
-  return {owenScramble(x, static_cast<uint32_t>(a >> 32)) * kTwoToMinus32,
-          owenScramble(y, static_cast<uint32_t>(b)) * kTwoToMinus32};
+  // i: the scrambled index; the first dimension's value is reverseBits(i), whose scramble
+  // reverses it back.
+  const uint32_t i = reverseBits(laineKarras(reverseBits(index), static_cast<uint32_t>(a)));
+  const auto& t = sobolSecondDimensionReversed();
+  const uint32_t yReversed = t[0][i & 0xffu] ^ t[1][(i >> 8) & 0xffu] ^ t[2][(i >> 16) & 0xffu] ^ t[3][i >> 24];
+  return {reverseBits(laineKarras(i, static_cast<uint32_t>(a >> 32))) * kTwoToMinus32,
+          reverseBits(laineKarras(yReversed, static_cast<uint32_t>(b))) * kTwoToMinus32};
 }
 
 Point2 SobolSampler::get2D() {

@@ -90,6 +90,9 @@ TEST(CliRenderErrors, NoCameraAndBadOptionsAreErrors) {
   EXPECT_EQ(r.exitCode, 2);
   r = runRadiosity("render " + kMirrorRoom + " --out " + out.string() + " --vfov 200");
   EXPECT_EQ(r.exitCode, 1);
+  r = runRadiosity("render " + kMirrorRoom + " --out " + out.string() + " --light-rays -1");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("--light-rays must be >= 0"), std::string::npos) << r.stderrText;
   EXPECT_FALSE(fs::exists(out / "render.exr"));
 }
 
