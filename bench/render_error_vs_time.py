@@ -63,7 +63,7 @@ SOLVE_SIZES = [(1500, 1024), (500, 256), (200, 128)]  # (elements, rays per elem
 # (gather rays, light rays per eye hit (0: as many as gather rays, the default), spp)
 RADIOSITY = [(1, 0, 16), (1, 0, 64), (1, 0, 256), (1, 0, 512), (4, 0, 16), (4, 0, 64), (4, 0, 128),
              (4, 2, 16), (4, 2, 64), (4, 2, 128)]
-PATH = [4, 8, 16, 32, 64, 128, 256]  # spp
+PATH = [4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048]  # spp: the last ones bracket 2% per pixel
 
 
 def render(build, method, options, out, repeats):
