@@ -32,7 +32,8 @@ Camera furnaceCamera() {
   return c;
 }
 
-void expectFurnace(const RenderOutput& out, double extraTolerance) {
+// `meanSigmas`: the image mean's tolerance in its standard errors (from the pixels' own variance).
+void expectFurnace(const RenderOutput& out, double extraTolerance, double meanSigmas = 4) {
   double sum = 0, variance = 0;
   int n = 0;
   for (size_t p = 0; p < out.image.pixels.size(); ++p)
@@ -44,8 +45,8 @@ void expectFurnace(const RenderOutput& out, double extraTolerance) {
       variance += out.variance.pixels[p][c];
       ++n;
     }
-  // The image mean: 4σ of the mean of all pixels.
-  EXPECT_NEAR(sum / n, kExpected, 4 * std::sqrt(variance) / n + extraTolerance);
+  // The image mean: meanSigmas σ of the mean of all pixels.
+  EXPECT_NEAR(sum / n, kExpected, meanSigmas * std::sqrt(variance) / n + extraTolerance);
 }
 
 SolveOptions furnaceSolve() {
@@ -83,7 +84,10 @@ TEST(RenderFurnace, FinalGatherWithFewerShadowRaysStaysUnbiased) {
     RenderSettings settings;
     settings.samplesPerPixel = 256;
     settings.showProgress = false;
-    expectFurnace(renderImage(furnaceCamera(), gather, settings), 1e-5);
+    // The image mean at 6σ, not 4σ: with one shadow ray per hit the heavy tail along the edges
+    // makes the pixels' sample variance understate the mean's spread (a clang build landed at
+    // 4.5σ, 7.5e-5 relative). A wrong MIS weight (rays not counted) is off by percents.
+    expectFurnace(renderImage(furnaceCamera(), gather, settings), 1e-5, 6);
   }
 }
 
