@@ -78,7 +78,8 @@ SolveResult solveAdaptive(const Scene& scene, int startElements, int budget) {
 
 // A reference solve: point values at the element centroids (one receiver point), shooting patches
 // of patchFactor × the element area.
-SolveResult solveReference(const Scene& scene, int elements, double patchFactor, int shadowRays, uint64_t seed) {
+SolveResult solveReference(const Scene& scene, int elements, double patchFactor, int shadowRays,
+                           uint64_t seed) {
   SolveOptions options;
   options.formFactors = FormFactorMethod::Analytic;
   options.maxArea = buildPatchMesh(scene).totalArea() / elements;
@@ -102,7 +103,8 @@ class DisplayedRadiance {
   explicit DisplayedRadiance(const SolveResult& r, bool elementMeans = false)
       : result_(r), interpolation_(*r.mesh) {
     const std::vector<std::array<Rgb, 3>> none;
-    for (const Rgb& l : interpolateVertexRadiance(interpolation_, r.radiosity, elementMeans ? none : r.pointRadiosity))
+    for (const Rgb& l : interpolateVertexRadiance(interpolation_, r.radiosity,
+                                                  elementMeans ? none : r.pointRadiosity))
       vertexValues_.emplace_back(l.r, l.g, l.b);
     byPatch_.resize(r.mesh->patchCount());
     for (int e = 0; e < r.mesh->elementCount(); ++e) byPatch_[r.mesh->patch(e)].push_back(e);
@@ -118,7 +120,8 @@ class DisplayedRadiance {
       const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]);
       const double area2 = n.squaredNorm();
       Eigen::Vector3d w;
-      for (int k = 0; k < 3; ++k) w[k] = (c[(k + 1) % 3] - p).cross(c[(k + 2) % 3] - p).dot(n) / area2;
+      for (int k = 0; k < 3; ++k)
+        w[k] = (c[(k + 1) % 3] - p).cross(c[(k + 2) % 3] - p).dot(n) / area2;
       const double outside = -std::min(0.0, w.minCoeff());
       if (outside < bestOutside) {
         bestOutside = outside;
@@ -147,7 +150,8 @@ class DisplayedRadiance {
 // With `byObject`, also each OBJ object's share of the squared relative error (they sum to its
 // square).
 template <class Value>
-double relativeRms(const SolveResult& reference, Value value, std::map<std::string, double>* byObject = nullptr) {
+double relativeRms(const SolveResult& reference, Value value,
+                   std::map<std::string, double>* byObject = nullptr) {
   const PatchMesh& ref = *reference.mesh;
   double num = 0, den = 0;
   std::map<std::string, double> parts;
@@ -176,12 +180,18 @@ int main(int argc, char** argv) {
   bool quick = false, breakdown = false;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
-    if (i + 1 < argc && flag == "--reference-elements") referenceElements = std::atoi(argv[++i]);
-    else if (i + 1 < argc && flag == "--out") outDir = argv[++i];
-    else if (flag == "--quick") quick = true;
-    else if (flag == "--breakdown") breakdown = true;
+    if (i + 1 < argc && flag == "--reference-elements")
+      referenceElements = std::atoi(argv[++i]);
+    else if (i + 1 < argc && flag == "--out")
+      outDir = argv[++i];
+    else if (flag == "--quick")
+      quick = true;
+    else if (flag == "--breakdown")
+      breakdown = true;
     else {
-      std::fprintf(stderr, "usage: mesh_error [--reference-elements N] [--out DIR] [--quick] [--breakdown]\n");
+      std::fprintf(
+          stderr,
+          "usage: mesh_error [--reference-elements N] [--out DIR] [--quick] [--breakdown]\n");
       return 2;
     }
   }
@@ -194,8 +204,8 @@ int main(int argc, char** argv) {
   const Scene scene = loadObjScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
   auto t0 = std::chrono::steady_clock::now();
   const SolveResult reference = solveReference(scene, referenceElements, 8, 64, 1);
-  std::fprintf(stderr, "reference: %d elements, %d shooting patches, %.1f s\n", reference.mesh->elementCount(),
-               reference.shooters, seconds(t0));
+  std::fprintf(stderr, "reference: %d elements, %d shooting patches, %.1f s\n",
+               reference.mesh->elementCount(), reference.shooters, seconds(t0));
   // How far is the reference from the truth? A second one on the same elements with coarser
   // shooting patches and fewer shadow rays (another seed) differs from it by about its own error
   // or more: the errors of both shrink with patch size and ray count.
@@ -204,10 +214,13 @@ int main(int argc, char** argv) {
   const DisplayedRadiance checkField(check);
   const double referenceError = relativeRms(reference, [&](int e) {
     Eigen::Vector3d w;
-    return radiance(check.radiosity[checkField.locate(reference.mesh->patch(e), reference.mesh->centroid(e), w)]);
+    return radiance(check.radiosity[checkField.locate(reference.mesh->patch(e),
+                                                      reference.mesh->centroid(e), w)]);
   });
-  std::fprintf(stderr, "reference check: %d elements, %d shooting patches, %.1f s: relative RMS difference %.4f\n",
-               check.mesh->elementCount(), check.shooters, seconds(t0), referenceError);
+  std::fprintf(
+      stderr,
+      "reference check: %d elements, %d shooting patches, %.1f s: relative RMS difference %.4f\n",
+      check.mesh->elementCount(), check.shooters, seconds(t0), referenceError);
 
   std::vector<Config> configs;
   for (int n : {125, 250, 500, 1000, 2000, 4000})
@@ -229,16 +242,20 @@ int main(int argc, char** argv) {
     const DisplayedRadiance field(r), meansField(r, true);
     const PatchMesh& ref = *reference.mesh;
     std::map<std::string, double> byObject;
-    const double error =
-        relativeRms(reference, [&](int e) { return field.at(ref.patch(e), ref.centroid(e)); }, &byObject);
-    const double errorMeans = relativeRms(reference, [&](int e) { return meansField.at(ref.patch(e), ref.centroid(e)); });
+    const double error = relativeRms(
+        reference, [&](int e) { return field.at(ref.patch(e), ref.centroid(e)); }, &byObject);
+    const double errorMeans =
+        relativeRms(reference, [&](int e) { return meansField.at(ref.patch(e), ref.centroid(e)); });
     points.push_back({c, r.mesh->elementCount(), r.shooters, error, time, errorMeans});
     std::fprintf(stderr,
-                 "%-8s start %5d budget %5d: %5d elements, %4d patches, relative RMS error %.4f (element means: "
+                 "%-8s start %5d budget %5d: %5d elements, %4d patches, relative RMS error %.4f "
+                 "(element means: "
                  "%.4f) (%.1f s)\n",
-                 c.kind.c_str(), c.startElements, c.budget, r.mesh->elementCount(), r.shooters, error, errorMeans, time);
+                 c.kind.c_str(), c.startElements, c.budget, r.mesh->elementCount(), r.shooters,
+                 error, errorMeans, time);
     if (breakdown) {
-      std::printf("%s %d elements: squared relative error %.5f =", c.kind.c_str(), r.mesh->elementCount(), error * error);
+      std::printf("%s %d elements: squared relative error %.5f =", c.kind.c_str(),
+                  r.mesh->elementCount(), error * error);
       for (const auto& [object, part] : byObject) std::printf(" %s %.5f", object.c_str(), part);
       std::printf("\n");
     }
@@ -246,7 +263,8 @@ int main(int argc, char** argv) {
 
   // Uniform elements needed for the same error as each adaptive mesh: log-log interpolation along
   // the uniform curve, extrapolated along its last segment below its smallest error.
-  std::vector<std::pair<double, double>> uniform;  // (log elements, log error), fewest elements first
+  std::vector<std::pair<double, double>>
+      uniform;  // (log elements, log error), fewest elements first
   for (const Point& p : points)
     if (p.config.kind == "uniform") uniform.push_back({std::log(p.elements), std::log(p.error)});
   auto uniformElementsFor = [&](double error, bool& extrapolated) {
@@ -261,24 +279,27 @@ int main(int argc, char** argv) {
 
   std::ofstream csv(outDir + "/mesh_error.csv");
   csv << "kind,start_target,budget,elements,shooting_patches,relative_rms_error,seconds,"
-         "uniform_elements_same_error,element_ratio,extrapolated,relative_rms_error_element_means\n";
+         "uniform_elements_same_error,element_ratio,extrapolated,relative_rms_error_element_"
+         "means\n";
   for (const Point& p : points) {
-    csv << p.config.kind << "," << p.config.startElements << "," << p.config.budget << "," << p.elements << ","
-        << p.shooters << "," << p.error << "," << p.seconds << ",";
+    csv << p.config.kind << "," << p.config.startElements << "," << p.config.budget << ","
+        << p.elements << "," << p.shooters << "," << p.error << "," << p.seconds << ",";
     if (p.config.kind == "adaptive") {
       bool extrapolated = false;
       const double same = uniformElementsFor(p.error, extrapolated);
       csv << std::lround(same) << "," << same / p.elements << "," << (extrapolated ? 1 : 0) << ","
           << p.errorElementMeans << "\n";
-      std::printf("adaptive %5d elements: error %.4f, uniform needs %5ld elements for it (%.2f×%s)\n", p.elements,
-                  p.error, std::lround(same), same / p.elements, extrapolated ? ", extrapolated" : "");
+      std::printf(
+          "adaptive %5d elements: error %.4f, uniform needs %5ld elements for it (%.2f×%s)\n",
+          p.elements, p.error, std::lround(same), same / p.elements,
+          extrapolated ? ", extrapolated" : "");
     } else {
       csv << ",,," << p.errorElementMeans << "\n";
       std::printf("uniform  %5d elements: error %.4f\n", p.elements, p.error);
     }
   }
-  csv << "reference," << referenceElements << ",0," << reference.mesh->elementCount() << "," << reference.shooters
-      << "," << referenceError << ",0,,,,\n";
+  csv << "reference," << referenceElements << ",0," << reference.mesh->elementCount() << ","
+      << reference.shooters << "," << referenceError << ",0,,,,\n";
   std::printf("reference %d elements; its check differs from it by %.4f (relative RMS)\n",
               reference.mesh->elementCount(), referenceError);
   csv.close();
@@ -286,39 +307,57 @@ int main(int argc, char** argv) {
   // Log-log plot, elements against error.
   double x0 = 1e9, x1 = 0, y0 = 1e9, y1 = 0;
   for (const auto& p : points) {
-    x0 = std::min(x0, std::log10(p.elements)); x1 = std::max(x1, std::log10(p.elements));
-    y0 = std::min(y0, std::log10(p.error)); y1 = std::max(y1, std::log10(p.error));
+    x0 = std::min(x0, std::log10(p.elements));
+    x1 = std::max(x1, std::log10(p.elements));
+    y0 = std::min(y0, std::log10(p.error));
+    y1 = std::max(y1, std::log10(p.error));
   }
-  x0 -= 0.1; x1 += 0.1; y0 -= 0.1; y1 += 0.1;
+  x0 -= 0.1;
+  x1 += 0.1;
+  y0 -= 0.1;
+  y1 += 0.1;
   const double w = 640, h = 420, m = 60;
   auto px = [&](double x) { return m + (std::log10(x) - x0) / (x1 - x0) * (w - 2 * m); };
   auto py = [&](double y) { return h - m - (std::log10(y) - y0) / (y1 - y0) * (h - 2 * m); };
   std::ofstream svg(outDir + "/mesh_error.svg");
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"640\" height=\"420\" font-family=\"sans-serif\" font-size=\"12\">\n"
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"640\" height=\"420\" "
+         "font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"640\" height=\"420\" fill=\"white\"/>\n"
-      << "<line x1=\"60\" y1=\"360\" x2=\"580\" y2=\"360\" stroke=\"black\"/><line x1=\"60\" y1=\"60\" x2=\"60\" y2=\"360\" stroke=\"black\"/>\n"
+      << "<line x1=\"60\" y1=\"360\" x2=\"580\" y2=\"360\" stroke=\"black\"/><line x1=\"60\" "
+         "y1=\"60\" x2=\"60\" y2=\"360\" stroke=\"black\"/>\n"
       << "<text x=\"320\" y=\"405\" text-anchor=\"middle\">elements (log)</text>\n"
-      << "<text x=\"15\" y=\"210\" transform=\"rotate(-90 15 210)\" text-anchor=\"middle\">relative RMS radiance error (log)</text>\n"
-      << "<text x=\"320\" y=\"25\" text-anchor=\"middle\">Cornell box: uniform vs adaptive meshing (reference " << reference.mesh->elementCount() << " elements)</text>\n";
+      << "<text x=\"15\" y=\"210\" transform=\"rotate(-90 15 210)\" "
+         "text-anchor=\"middle\">relative RMS radiance error (log)</text>\n"
+      << "<text x=\"320\" y=\"25\" text-anchor=\"middle\">Cornell box: uniform vs adaptive meshing "
+         "(reference "
+      << reference.mesh->elementCount() << " elements)</text>\n";
   for (double v : {50., 100., 200., 500., 1000., 2000., 5000.})
-    if (std::log10(v) > x0 && std::log10(v) < x1) svg << "<text x=\"" << px(v) << "\" y=\"378\" text-anchor=\"middle\">" << v << "</text>\n";
+    if (std::log10(v) > x0 && std::log10(v) < x1)
+      svg << "<text x=\"" << px(v) << "\" y=\"378\" text-anchor=\"middle\">" << v << "</text>\n";
   for (double v : {0.005, 0.01, 0.02, 0.05, 0.1, 0.2})
-    if (std::log10(v) > y0 && std::log10(v) < y1) svg << "<text x=\"52\" y=\"" << py(v) + 4 << "\" text-anchor=\"end\">" << v << "</text>\n";
+    if (std::log10(v) > y0 && std::log10(v) < y1)
+      svg << "<text x=\"52\" y=\"" << py(v) + 4 << "\" text-anchor=\"end\">" << v << "</text>\n";
   for (const std::string kind : {"uniform", "adaptive"}) {
     const char* colour = kind == "uniform" ? "#2c3e50" : "#c0392b";
     svg << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" points=\"";
-    for (const auto& p : points) if (p.config.kind == kind) svg << px(p.elements) << "," << py(p.error) << " ";
+    for (const auto& p : points)
+      if (p.config.kind == kind) svg << px(p.elements) << "," << py(p.error) << " ";
     svg << "\"/>\n";
     for (const auto& p : points)
-      if (p.config.kind == kind) svg << "<circle cx=\"" << px(p.elements) << "\" cy=\"" << py(p.error) << "\" r=\"3\" fill=\"" << colour << "\"/>\n";
+      if (p.config.kind == kind)
+        svg << "<circle cx=\"" << px(p.elements) << "\" cy=\"" << py(p.error)
+            << "\" r=\"3\" fill=\"" << colour << "\"/>\n";
   }
-  svg << "<text x=\"440\" y=\"70\" fill=\"#2c3e50\">uniform</text><text x=\"440\" y=\"86\" fill=\"#c0392b\">adaptive (threshold "
+  svg << "<text x=\"440\" y=\"70\" fill=\"#2c3e50\">uniform</text><text x=\"440\" y=\"86\" "
+         "fill=\"#c0392b\">adaptive (threshold "
       << kThreshold << ")</text>\n</svg>\n";
   svg.close();
 
   // The PNG plot, where Debian's python has matplotlib (scripts/setup.sh --bench).
-  const std::string plot = std::string("/usr/bin/python3 ") + RADIOSITY_SOURCE_DIR "/bench/plot_mesh_error.py " + outDir;
+  const std::string plot =
+      std::string("/usr/bin/python3 ") + RADIOSITY_SOURCE_DIR "/bench/plot_mesh_error.py " + outDir;
   if (std::system(plot.c_str()) != 0)
-    std::fprintf(stderr, "mesh_error: no PNG plot (run %s by hand; it needs python3-matplotlib)\n", plot.c_str());
+    std::fprintf(stderr, "mesh_error: no PNG plot (run %s by hand; it needs python3-matplotlib)\n",
+                 plot.c_str());
   return 0;
 }

@@ -16,11 +16,11 @@
 //       → OUT = (A+B)/2 and, per pixel, the variance of that mean, estimated without bias as
 //       (A−B)²/4 (A, B independent renders of the same image with the same settings); prints the
 //       image-wide relative RMSE of OUT's noise and its per-pixel relative RMSE (ε as above)
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
-#include <algorithm>
 
 #include "radiosity/output/image_io.h"
 
@@ -131,7 +131,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (mode == "relmse" && argc == 5) {
-      const rad::ImageRgb a = rad::readExr(argv[2]), r = rad::readExr(argv[3]), v = rad::readExr(argv[4]);
+      const rad::ImageRgb a = rad::readExr(argv[2]), r = rad::readExr(argv[3]),
+                          v = rad::readExr(argv[4]);
       requireSameSize(a, r);
       requireSameSize(v, r);
       const double epsilon = relativeEpsilon(r);
@@ -144,7 +145,8 @@ int main(int argc, char** argv) {
           ref2 += (r.pixels[p] * r.pixels[p]).sum();
         }
       std::printf("%.6f %.6f %.6g %.6f\n", std::sqrt(std::max(0.0, relativeMse(a, r, &v, epsilon))),
-                  std::sqrt(relativeMse(a, r, nullptr, epsilon)), epsilon, std::sqrt(noise2 / ref2));
+                  std::sqrt(relativeMse(a, r, nullptr, epsilon)), epsilon,
+                  std::sqrt(noise2 / ref2));
       return 0;
     }
     if (mode == "halves" && argc == 6) {
@@ -179,8 +181,10 @@ int main(int argc, char** argv) {
       if (std::fclose(f) != 0) throw std::runtime_error(std::string("cannot write ") + argv[3]);
       return 0;
     }
-    std::fprintf(stderr, "usage: render_compare rmse IMAGE REF | relmse IMAGE REF REF_VARIANCE | average A B OUT | "
-                 "halves A B OUT OUT_VARIANCE | pfm IMAGE OUT\n");
+    std::fprintf(
+        stderr,
+        "usage: render_compare rmse IMAGE REF | relmse IMAGE REF REF_VARIANCE | average A B OUT | "
+        "halves A B OUT OUT_VARIANCE | pfm IMAGE OUT\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -8,7 +8,8 @@
 // Emitters are left out (their emission is exact in every configuration).
 //
 //   time_vs_error SCENE.obj --name NAME --out DIR [--elements 250,1000,3000] [--rays 64,256,1024]
-//                 [--analytic-elements LIST (default: --elements; analytic costs elements × patches)]
+//                 [--analytic-elements LIST (default: --elements; analytic costs elements ×
+//                 patches)]
 //                 [--reference analytic|hemisphere] [--reference-elements N] [--reference-rays N]
 //                 [--threads T]
 //
@@ -17,8 +18,9 @@
 // (patches shoot, elements receive; its cost grows as elements × patches, so large scenes take
 // --reference hemisphere: many rays per element instead). Scenes with mirrors or glass need the
 // hemisphere rays' specular continuation, so their reference is always hemisphere rows, and
-// analytic configurations (and adaptive refinement, which builds on them) are skipped there. The reference's own Monte Carlo noise is measured by a
-// second reference run with another seed and written with every row.
+// analytic configurations (and adaptive refinement, which builds on them) are skipped there. The
+// reference's own Monte Carlo noise is measured by a second reference run with another seed and
+// written with every row.
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cmath>
@@ -60,7 +62,8 @@ class ElementLookup {
       const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]);
       double outside = 0;
       for (int k = 0; k < 3; ++k)
-        outside -= std::min(0.0, (c[(k + 1) % 3] - p).cross(c[(k + 2) % 3] - p).dot(n) / n.squaredNorm());
+        outside -=
+            std::min(0.0, (c[(k + 1) % 3] - p).cross(c[(k + 2) % 3] - p).dot(n) / n.squaredNorm());
       if (outside < bestOutside) {
         bestOutside = outside;
         best = e;
@@ -122,9 +125,11 @@ std::vector<Config> sweep(const std::vector<int>& elements, const std::vector<in
   std::vector<Config> configs;
   auto add = [&](SolveOptions o) {
     o.threads = threads;
-    std::string label = (o.formFactors == FormFactorMethod::Analytic ? "analytic" : "hemisphere " +
-                         std::to_string(o.raysPerElement) + " rays") + ", " + solverKindName(o.solver) +
-                        ", " + std::to_string(o.targetElements) + " elements, tolerance " + format(o.tolerance);
+    std::string label = (o.formFactors == FormFactorMethod::Analytic
+                             ? "analytic"
+                             : "hemisphere " + std::to_string(o.raysPerElement) + " rays") +
+                        ", " + solverKindName(o.solver) + ", " + std::to_string(o.targetElements) +
+                        " elements, tolerance " + format(o.tolerance);
     if (o.refineThreshold > 0) label += ", refine " + format(o.refineThreshold);
     configs.push_back({o, label});
   };
@@ -182,11 +187,12 @@ std::vector<Config> sweep(const std::vector<int>& elements, const std::vector<in
 }
 
 int usage() {
-  std::fprintf(stderr,
-               "usage: time_vs_error SCENE.obj --name NAME --out DIR [--elements a,b,c] [--rays a,b,c]\n"
-               "                     [--analytic-elements a,b,c]\n"
-               "                     [--reference analytic|hemisphere] [--reference-elements N]\n"
-               "                     [--reference-rays N] [--threads T]\n");
+  std::fprintf(
+      stderr,
+      "usage: time_vs_error SCENE.obj --name NAME --out DIR [--elements a,b,c] [--rays a,b,c]\n"
+      "                     [--analytic-elements a,b,c]\n"
+      "                     [--reference analytic|hemisphere] [--reference-elements N]\n"
+      "                     [--reference-rays N] [--threads T]\n");
   return 2;
 }
 
@@ -204,18 +210,26 @@ int main(int argc, char** argv) {
       const std::string flag = argv[i];
       if (i + 1 >= argc) return usage();
       const std::string value = argv[i + 1];
-      if (flag == "--name") name = value;
-      else if (flag == "--out") outDir = value;
-      else if (flag == "--elements") elements = parseList(value);
-      else if (flag == "--rays") rays = parseList(value);
-      else if (flag == "--analytic-elements") analyticElements = parseList(value);
-      else if (flag == "--reference-elements") referenceElements = parseList(value).at(0);
-      else if (flag == "--reference-rays") referenceRays = parseList(value).at(0);
+      if (flag == "--name")
+        name = value;
+      else if (flag == "--out")
+        outDir = value;
+      else if (flag == "--elements")
+        elements = parseList(value);
+      else if (flag == "--rays")
+        rays = parseList(value);
+      else if (flag == "--analytic-elements")
+        analyticElements = parseList(value);
+      else if (flag == "--reference-elements")
+        referenceElements = parseList(value).at(0);
+      else if (flag == "--reference-rays")
+        referenceRays = parseList(value).at(0);
       else if (flag == "--reference") {
-        if (value != "analytic" && value != "hemisphere") throw std::invalid_argument("--reference " + value);
+        if (value != "analytic" && value != "hemisphere")
+          throw std::invalid_argument("--reference " + value);
         analyticReference = value == "analytic";
-      }
-      else if (flag == "--threads") threads = std::stoi(value);
+      } else if (flag == "--threads")
+        threads = std::stoi(value);
       else {
         std::fprintf(stderr, "time_vs_error: unknown option %s\n", flag.c_str());
         return usage();
@@ -241,8 +255,10 @@ int main(int argc, char** argv) {
     ref.seed = 1001;  // not the configurations' seed: a configuration equal to the reference in
                       // every setting still gets independent noise
     const bool analytic = analyticReference && !specular;
-    if (analytic) ref.formFactors = FormFactorMethod::Analytic;
-    else ref.raysPerElement = referenceRays;
+    if (analytic)
+      ref.formFactors = FormFactorMethod::Analytic;
+    else
+      ref.raysPerElement = referenceRays;
     auto t0 = std::chrono::steady_clock::now();
     const SolveResult reference = solveScene(scene, ref);
     const double referenceSeconds = seconds(t0);
@@ -250,16 +266,22 @@ int main(int argc, char** argv) {
     const SolveResult referenceAgain = solveScene(scene, ref);
     // Two independent estimates differ by sqrt(2) times the noise of one.
     const double referenceNoise = relativeRmsError(reference, referenceAgain) / std::sqrt(2.0);
-    std::fprintf(stderr, "%s: reference %s, %d elements, %.1f s, own noise %.4f (relative RMS)\n", name.c_str(),
-                 analytic ? "analytic" : ("hemisphere " + std::to_string(referenceRays) + " rays").c_str(),
-                 reference.mesh->elementCount(), referenceSeconds, referenceNoise);
+    std::fprintf(
+        stderr, "%s: reference %s, %d elements, %.1f s, own noise %.4f (relative RMS)\n",
+        name.c_str(),
+        analytic ? "analytic" : ("hemisphere " + std::to_string(referenceRays) + " rays").c_str(),
+        reference.mesh->elementCount(), referenceSeconds, referenceNoise);
     if (specular)
-      std::fprintf(stderr, "%s: analytic form factors and adaptive refinement skipped: the scene has mirrors or "
-                           "glass, which only hemisphere rows carry light through\n", name.c_str());
+      std::fprintf(
+          stderr,
+          "%s: analytic form factors and adaptive refinement skipped: the scene has mirrors or "
+          "glass, which only hemisphere rows carry light through\n",
+          name.c_str());
 
     AtomicFile file(outDir + "/time_vs_error_" + name + ".csv");
     std::ostream& csv = file.stream();
-    csv << "scene,form_factors,solver,rays,target_elements,refine_threshold,tolerance,elements,seconds,"
+    csv << "scene,form_factors,solver,rays,target_elements,refine_threshold,tolerance,elements,"
+           "seconds,"
            "relative_rmse,converged,reference_elements,reference_noise\n";
     for (const Config& c : sweep(elements, rays, analyticElements, specular, threads)) {
       t0 = std::chrono::steady_clock::now();
@@ -268,12 +290,13 @@ int main(int argc, char** argv) {
       const double error = relativeRmsError(reference, r);
       const SolveOptions& o = c.options;
       const bool analyticConfig = o.formFactors == FormFactorMethod::Analytic;
-      csv << name << ',' << (analyticConfig ? "analytic" : "hemisphere") << ',' << solverKindName(o.solver) << ','
-          << (analyticConfig ? 0 : o.raysPerElement) << ',' << o.targetElements << ',' << o.refineThreshold << ','
-          << o.tolerance << ',' << r.mesh->elementCount() << ',' << wall << ',' << error << ','
-          << (r.converged ? 1 : 0) << ',' << reference.mesh->elementCount() << ',' << referenceNoise << '\n';
-      std::fprintf(stderr, "%s: %-70s %6d elements %7.2f s  error %.4f\n", name.c_str(), c.label.c_str(),
-                   r.mesh->elementCount(), wall, error);
+      csv << name << ',' << (analyticConfig ? "analytic" : "hemisphere") << ','
+          << solverKindName(o.solver) << ',' << (analyticConfig ? 0 : o.raysPerElement) << ','
+          << o.targetElements << ',' << o.refineThreshold << ',' << o.tolerance << ','
+          << r.mesh->elementCount() << ',' << wall << ',' << error << ',' << (r.converged ? 1 : 0)
+          << ',' << reference.mesh->elementCount() << ',' << referenceNoise << '\n';
+      std::fprintf(stderr, "%s: %-70s %6d elements %7.2f s  error %.4f\n", name.c_str(),
+                   c.label.c_str(), r.mesh->elementCount(), wall, error);
     }
     file.commit();
   } catch (const std::exception& e) {

@@ -62,7 +62,8 @@ class TriangleGrid {
     const int64_t y0 = static_cast<int64_t>(std::floor(lo.y() / cell_)),
                   y1 = static_cast<int64_t>(std::floor(hi.y() / cell_));
     for (int64_t y = y0; y <= y1; ++y)
-      for (int64_t x = x0; x <= x1; ++x) f(static_cast<int64_t>((static_cast<uint64_t>(x) << 32) ^
+      for (int64_t x = x0; x <= x1; ++x)
+        f(static_cast<int64_t>((static_cast<uint64_t>(x) << 32) ^
                                (static_cast<uint64_t>(y) & 0xffffffffu)));  // no signed shift (UB)
   }
   double cell_;

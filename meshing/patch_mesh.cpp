@@ -1,7 +1,7 @@
 #include "meshing/patch_mesh.h"
 
-#include <OpenMesh/Core/System/omstream.hh>
 #include <Eigen/Geometry>
+#include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
 #include <stdexcept>
 
@@ -48,7 +48,10 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
       if (v < 0 || v >= static_cast<int>(positions.size()))
         throw std::out_of_range("PatchMesh: vertex index out of range");
       points.push_back(positions[v]);
-      if (first) { boundsMin_ = boundsMax_ = positions[v]; first = false; }
+      if (first) {
+        boundsMin_ = boundsMax_ = positions[v];
+        first = false;
+      }
       boundsMin_ = boundsMin_.cwiseMin(positions[v]);
       boundsMax_ = boundsMax_.cwiseMax(positions[v]);
     }
@@ -175,7 +178,8 @@ TriMesh::EdgeHandle PatchMesh::longestEdge(TriMesh::FaceHandle f) const {
   for (auto eh : mesh_.fe_range(f)) longest = std::max(longest, mesh_.calc_edge_sqr_length(eh));
   TriMesh::EdgeHandle best;
   for (auto eh : mesh_.fe_range(f))
-    if (mesh_.calc_edge_sqr_length(eh) >= longest * (1 - kTie) && (!best.is_valid() || eh.idx() < best.idx()))
+    if (mesh_.calc_edge_sqr_length(eh) >= longest * (1 - kTie) &&
+        (!best.is_valid() || eh.idx() < best.idx()))
       best = eh;
   return best;
 }
@@ -183,8 +187,8 @@ TriMesh::EdgeHandle PatchMesh::longestEdge(TriMesh::FaceHandle f) const {
 void PatchMesh::splitEdge(TriMesh::EdgeHandle e) {
   const auto h = mesh_.halfedge_handle(e, 0);
   const int from = mesh_.from_vertex_handle(h).idx(), to = mesh_.to_vertex_handle(h).idx();
-  const auto mid =
-      mesh_.add_vertex((mesh_.point(mesh_.from_vertex_handle(h)) + mesh_.point(mesh_.to_vertex_handle(h))) * 0.5);
+  const auto mid = mesh_.add_vertex(
+      (mesh_.point(mesh_.from_vertex_handle(h)) + mesh_.point(mesh_.to_vertex_handle(h))) * 0.5);
   // split_copy gives each new face the properties (patch, material, level, UVs) of the face it
   // was cut from, so every face around the new vertex is a child one level below its parent.
   mesh_.split_copy(e, mid);
@@ -210,9 +214,8 @@ void PatchMesh::splitUvs(TriMesh::FaceHandle f, int from, int to, int mid) {
   for (auto vh : mesh_.fv_range(f)) {
     child.vertex[k] = vh.idx();
     for (int axis = 0; axis < 2; ++axis)
-      child.uv[2 * k + axis] = vh.idx() == mid
-                                   ? 0.5 * (parentUv(from, axis) + parentUv(to, axis))
-                                   : parentUv(vh.idx(), axis);
+      child.uv[2 * k + axis] = vh.idx() == mid ? 0.5 * (parentUv(from, axis) + parentUv(to, axis))
+                                               : parentUv(vh.idx(), axis);
     ++k;
   }
   mesh_.property(uvs_, f) = child;

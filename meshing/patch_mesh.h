@@ -1,7 +1,7 @@
 #pragma once
 
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <Eigen/Core>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <array>
 #include <utility>
 #include <vector>
@@ -33,7 +33,8 @@ struct PatchPolygon {
 // mesh's faces, numbered 0..elementCount()-1; that index is used by every later stage.
 class PatchMesh {
  public:
-  PatchMesh(const std::vector<Eigen::Vector3d>& positions, const std::vector<PatchPolygon>& polygons);
+  PatchMesh(const std::vector<Eigen::Vector3d>& positions,
+            const std::vector<PatchPolygon>& polygons);
 
   int elementCount() const { return static_cast<int>(mesh_.n_faces()); }
   int patchCount() const { return patchCount_; }
@@ -63,8 +64,12 @@ class PatchMesh {
   // power a progressive solver still holds (W). Zero until a solver writes them.
   Eigen::Vector3d radiosity(int element) const { return mesh_.property(radiosity_, face(element)); }
   Eigen::Vector3d unshot(int element) const { return mesh_.property(unshot_, face(element)); }
-  void setRadiosity(int element, const Eigen::Vector3d& b) { mesh_.property(radiosity_, face(element)) = b; }
-  void setUnshot(int element, const Eigen::Vector3d& u) { mesh_.property(unshot_, face(element)) = u; }
+  void setRadiosity(int element, const Eigen::Vector3d& b) {
+    mesh_.property(radiosity_, face(element)) = b;
+  }
+  void setUnshot(int element, const Eigen::Vector3d& u) {
+    mesh_.property(unshot_, face(element)) = u;
+  }
 
   double totalArea() const;
   double patchArea(int patch) const;
@@ -76,8 +81,12 @@ class PatchMesh {
   // elements split afterwards stay in their parent's shooter, so shooters tile the surface with
   // triangles coarser than the elements. Before markShooters(), each element is its own shooter.
   void markShooters();
-  int shooterCount() const { return shootersMarked_ ? static_cast<int>(shooterCorners_.size()) : elementCount(); }
-  int shooter(int element) const { return shootersMarked_ ? mesh_.property(shooterId_, face(element)) : element; }
+  int shooterCount() const {
+    return shootersMarked_ ? static_cast<int>(shooterCorners_.size()) : elementCount();
+  }
+  int shooter(int element) const {
+    return shootersMarked_ ? mesh_.property(shooterId_, face(element)) : element;
+  }
   std::array<Eigen::Vector3d, 3> shooterCorners(int shooter) const {
     return shootersMarked_ ? shooterCorners_[shooter] : corners(shooter);
   }

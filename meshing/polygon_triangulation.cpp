@@ -31,12 +31,14 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Eigen::Vect
   const double orientation = normal[drop] >= 0 ? 1.0 : -1.0;
   auto cross2 = [&](int a, int b, int c) {
     const Eigen::Vector3d &pa = polygon[a], &pb = polygon[b], &pc = polygon[c];
-    return orientation * ((pb[ax] - pa[ax]) * (pc[ay] - pa[ay]) - (pb[ay] - pa[ay]) * (pc[ax] - pa[ax]));
+    return orientation *
+           ((pb[ax] - pa[ax]) * (pc[ay] - pa[ay]) - (pb[ay] - pa[ay]) * (pc[ax] - pa[ax]));
   };
   // Closed test: a vertex on the ear's border (e.g. a reflex corner touching the diagonal) also
   // blocks it, unless it coincides with one of the ear's own corners.
   auto inside = [&](int a, int b, int c, int p) {
-    if (polygon[p] == polygon[a] || polygon[p] == polygon[b] || polygon[p] == polygon[c]) return false;
+    if (polygon[p] == polygon[a] || polygon[p] == polygon[b] || polygon[p] == polygon[c])
+      return false;
     return cross2(a, b, p) >= 0 && cross2(b, c, p) >= 0 && cross2(c, a, p) >= 0;
   };
 
@@ -52,7 +54,10 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Eigen::Vect
       if (cross2(a, b, c) <= 0) continue;  // reflex or degenerate corner
       bool blocked = false;
       for (int q : ring)
-        if (q != a && q != b && q != c && inside(a, b, c, q)) { blocked = true; break; }
+        if (q != a && q != b && q != c && inside(a, b, c, q)) {
+          blocked = true;
+          break;
+        }
       if (blocked) continue;
       triangles.push_back({a, b, c});
       ring.erase(ring.begin() + i);
@@ -61,7 +66,8 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<Eigen::Vect
     }
     if (!clipped) {
       // Self-intersecting or collinear input: fall back to a fan over what is left.
-      for (size_t i = 1; i + 1 < ring.size(); ++i) triangles.push_back({ring[0], ring[i], ring[i + 1]});
+      for (size_t i = 1; i + 1 < ring.size(); ++i)
+        triangles.push_back({ring[0], ring[i], ring[i + 1]});
       return triangles;
     }
   }

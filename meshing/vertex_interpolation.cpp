@@ -13,7 +13,11 @@ VertexInterpolation::VertexInterpolation(const PatchMesh& patchMesh, double crea
   std::vector<Eigen::Vector3d> elementNormals(elementCount);
   for (int e = 0; e < elementCount; ++e) elementNormals[e] = patchMesh.normal(e);
 
-  struct Cluster { int vertex; int material; Eigen::Vector3d normal; };
+  struct Cluster {
+    int vertex;
+    int material;
+    Eigen::Vector3d normal;
+  };
   std::vector<std::vector<int>> members;  // elements of each output vertex
   offsets_.push_back(0);
   for (auto vh : mesh.vertices()) {

@@ -93,16 +93,17 @@ class XmlScanner {
     const std::size_t before = pos_;
     for (; pos_ < text_.size(); ++pos_) {
       const char c = text_[pos_];
-      if (c == '\n') ++line_;
-      else if (c != ' ' && c != '\t' && c != '\r') break;
+      if (c == '\n')
+        ++line_;
+      else if (c != ' ' && c != '\t' && c != '\r')
+        break;
     }
     return pos_ > before;
   }
   std::string word(const char* what) {
     const std::size_t start = pos_;
     auto isWordChar = [](char c) {
-      return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-             c == '_';
+      return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
     };
     while (pos_ < text_.size() && isWordChar(text_[pos_])) ++pos_;
     if (pos_ == start || (text_[start] >= '0' && text_[start] <= '9'))
@@ -131,7 +132,7 @@ struct ArraySpec {
 
 std::uint64_t wordSizeOf(const std::string& type) {
   static const std::map<std::string, std::uint64_t> sizes = {
-      {"Int8", 1},  {"UInt8", 1},  {"Int16", 2},   {"UInt16", 2},  {"Int32", 4},
+      {"Int8", 1},   {"UInt8", 1}, {"Int16", 2},  {"UInt16", 2},  {"Int32", 4},
       {"UInt32", 4}, {"Int64", 8}, {"UInt64", 8}, {"Float32", 4}, {"Float64", 8}};
   const auto it = sizes.find(type);
   return it == sizes.end() ? 0 : it->second;
@@ -154,8 +155,8 @@ class LayoutReader {
     only(open("FieldData"), {});
     arrays("FieldData", "field", 0);
     const Element piece = open("Piece");
-    only(piece, {"NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips",
-                 "NumberOfPolys"});
+    only(piece,
+         {"NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"});
     const std::uint64_t points = count(piece, "NumberOfPoints");
     for (const char* other : {"NumberOfVerts", "NumberOfLines", "NumberOfStrips"})
       if (count(piece, other) != 0) fail(piece, std::string(other) + " must be 0: triangles only");
@@ -199,8 +200,8 @@ class LayoutReader {
   void close(const std::string& name) {
     const Element e = xml_.next();
     if (!e.closing || e.name != name)
-      fail(e, "expected </" + name + ">, found <" + std::string(e.closing ? "/" : "") + e.name +
-                  ">");
+      fail(e,
+           "expected </" + name + ">, found <" + std::string(e.closing ? "/" : "") + e.name + ">");
   }
   void only(const Element& e, std::initializer_list<const char*> allowed) {
     for (const auto& [key, value] : e.attributes) {
@@ -386,9 +387,11 @@ class ContentCheck {
 
 // Walks one array's compression header and blocks at `cursor` in the appended data, inflating
 // each; returns the offset just past the array.
-std::uint64_t checkBlocks(const std::string& path, const ArraySpec& spec,
-                          std::string_view data, std::uint64_t cursor) {
-  auto fail = [&](const std::string& what) { throw InputError(path, spec.line, spec.what + ": " + what); };
+std::uint64_t checkBlocks(const std::string& path, const ArraySpec& spec, std::string_view data,
+                          std::uint64_t cursor) {
+  auto fail = [&](const std::string& what) {
+    throw InputError(path, spec.line, spec.what + ": " + what);
+  };
   if (spec.offset != cursor)
     fail("offset " + std::to_string(spec.offset) + ", expected " + std::to_string(cursor) +
          " (where the previous array ends)");
@@ -415,7 +418,8 @@ std::uint64_t checkBlocks(const std::string& path, const ArraySpec& spec,
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const std::uint64_t compressed = littleEndian(compressedSizes + 4 * b, 4);
     const std::uint64_t inflated = (b + 1 == blocks && lastSize) ? lastSize : blockSize;
-    if (compressed > size - cursor) fail("block " + std::to_string(b) + " runs past the end of the data");
+    if (compressed > size - cursor)
+      fail("block " + std::to_string(b) + " runs past the end of the data");
     if (!inflateExactly(bytes + cursor, compressed, block.data(), inflated))
       fail("block " + std::to_string(b) + " does not inflate to its " + std::to_string(inflated) +
            " bytes");
@@ -432,16 +436,15 @@ std::uint64_t checkBlocks(const std::string& path, const ArraySpec& spec,
 void checkSolutionVtpLayout(const std::string& path, std::string_view bytes) {
   std::size_t dataStart = 0;
   const std::vector<ArraySpec> arrays = LayoutReader(path, bytes).read(dataStart);
-  if (bytes.size() < dataStart + kTail.size() ||
-      bytes.substr(bytes.size() - kTail.size()) != kTail)
+  if (bytes.size() < dataStart + kTail.size() || bytes.substr(bytes.size() - kTail.size()) != kTail)
     throw InputError(path, 0, "does not end as VTK's writer ends a file (</AppendedData>)");
   const std::string_view data = bytes.substr(dataStart, bytes.size() - kTail.size() - dataStart);
   std::uint64_t cursor = 0;
   for (const ArraySpec& spec : arrays) cursor = checkBlocks(path, spec, data, cursor);
   if (cursor != data.size())
-    throw InputError(path, 0,
-                     std::to_string(data.size() - cursor) +
-                         " bytes of appended data after the last array");
+    throw InputError(
+        path, 0,
+        std::to_string(data.size() - cursor) + " bytes of appended data after the last array");
 }
 
 }  // namespace rad

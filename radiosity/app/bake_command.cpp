@@ -41,7 +41,7 @@ struct BakeOptions {
   double chartAngle = 30;
   bool noLightmap = false;
   bool sceneUvs = false;  // bake into the scene's own texture coordinates
-  int gather = 0;  // per-texel final gather rays; 0: interpolate the solution
+  int gather = 0;         // per-texel final gather rays; 0: interpolate the solution
 };
 
 double since(std::chrono::steady_clock::time_point t) {
@@ -88,8 +88,8 @@ void runBake(BakeOptions& o) {
     auto t = std::chrono::steady_clock::now();
     try {
       if (o.sceneUvs) {
-        const int side = o.texelSize > 0 ? atlasSideForTexelSize(mesh, o.texelSize, 16384)
-                                         : o.lightmapSize;
+        const int side =
+            o.texelSize > 0 ? atlasSideForTexelSize(mesh, o.texelSize, 16384) : o.lightmapSize;
         layout = layoutFromMeshUvs(mesh, side, side, o.padding);
       } else {
         layout = packLightmapCharts(buildLightmapCharts(mesh, {o.chartAngle}),
@@ -112,8 +112,8 @@ void runBake(BakeOptions& o) {
                                 const auto c = mesh.corners(e);
                                 Rng rng(streamKey(seed, 0x6c6d6170ull, texel));  // per texel
                                 RayCounts counts;
-                                return gather.outgoingRadiance(e, b[0] * c[0] + b[1] * c[1] + b[2] * c[2],
-                                                               rng, counts);
+                                return gather.outgoingRadiance(
+                                    e, b[0] * c[0] + b[1] * c[1] + b[2] * c[2], rng, counts);
                               });
     } else {
       lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation);
@@ -125,9 +125,9 @@ void runBake(BakeOptions& o) {
                  std::to_string(layout.width) + "×" + std::to_string(layout.height) +
                  "): bilinear filtering bleeds there; space the islands or lower --lightmap-size");
     logInfo("lightmap: " + std::string(o.sceneUvs ? "the scene's UVs, " : "") +
-            std::to_string(layout.rects.size()) + " charts, " +
-            std::to_string(layout.width) + "×" + std::to_string(layout.height) + " texels of " +
-            std::to_string(layout.texelSize) + " scene units");
+            std::to_string(layout.rects.size()) + " charts, " + std::to_string(layout.width) + "×" +
+            std::to_string(layout.height) + " texels of " + std::to_string(layout.texelSize) +
+            " scene units");
     summary["lightmap"] = {{"uvs", o.sceneUvs ? "scene" : "generated"},
                            {"charts", layout.rects.size()},
                            {"width", layout.width},
@@ -212,11 +212,10 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
                    "interpolate the solution")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
-  auto* angle =
-      bake->add_option("--chart-angle", o->chartAngle,
-                       "Largest normal angle within one chart, degrees")
-          ->default_val(o->chartAngle)
-          ->check(CLI::Range(0.0, 89.0));
+  auto* angle = bake->add_option("--chart-angle", o->chartAngle,
+                                 "Largest normal angle within one chart, degrees")
+                    ->default_val(o->chartAngle)
+                    ->check(CLI::Range(0.0, 89.0));
   auto* noLightmap =
       bake->add_flag("--no-lightmap,--vertex-colors-only", o->noLightmap,
                      "Vertex colours only: vertex_colors.ply and an unlit scene_baked.glb");

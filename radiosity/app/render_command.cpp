@@ -39,7 +39,7 @@ struct RenderCommandOptions {
   std::string method = "radiosity";
   int gather = kRenderGather;
   int lightRays = 0;  // 0: as many as gather
-  int spp = 0;  // 0: the method's default
+  int spp = 0;        // 0: the method's default
   std::string cameraFile;
   std::vector<double> position, lookAt, up;
   std::optional<double> vfov, lensRadius, focusDistance, exposure;
@@ -98,11 +98,14 @@ void checkPathOptions(const RenderCommandOptions& o) {
     throw InputError("--paths and --bounces-separate cannot be combined: give one of them");
   if (o.mis != "power" && o.mis != "balance")
     throw InputError("unknown --mis '" + o.mis + "' (expected power or balance)");
-  if (o.mis != "power" && o.method != "bdpt") throw InputError("--mis applies to --method bdpt only");
+  if (o.mis != "power" && o.method != "bdpt")
+    throw InputError("--mis applies to --method bdpt only");
   if (o.bouncesSeparate && o.method == "radiosity" && o.solverName != "progressive" &&
       o.solverName != "jacobi")
-    throw InputError("--bounces-separate with --method radiosity runs --solver jacobi (its iterates "
-                     "are the Neumann terms); --solver " + o.solverName + " cannot give them");
+    throw InputError(
+        "--bounces-separate with --method radiosity runs --solver jacobi (its iterates "
+        "are the Neumann terms); --solver " +
+        o.solverName + " cannot give them");
   if (o.bouncesSeparate && o.solve.bounces >= 0)
     throw InputError("--bounces-separate K sets the Jacobi bounces itself: leave out --bounces");
 }
@@ -167,7 +170,7 @@ void runRender(RenderCommandOptions& o) {
   if (pathIntegrator && (pathFilter || separateBounces)) {
     std::optional<BounceBinning> bounceBins;
     if (separateBounces) bounceBins.emplace(*o.bouncesSeparate);
-    const PathBinning* binning = pathFilter ? static_cast<const PathBinning*>(&*pathFilter)
+    const PathBinning* binning = pathFilter   ? static_cast<const PathBinning*>(&*pathFilter)
                                  : bounceBins ? static_cast<const PathBinning*>(&*bounceBins)
                                               : nullptr;
     PathRenderOutput out = renderPathImage(camera, *pathIntegrator, settings, binning);
@@ -191,7 +194,8 @@ void runRender(RenderCommandOptions& o) {
       }
       if (o.gather > 0)
         skip("final gather in the bounce_* images",
-             "each Neumann term is shown by the interpolated preview (--gather 0), which they sum to");
+             "each Neumann term is shown by the interpolated preview (--gather 0), which they sum "
+             "to");
     }
   }
   if (render.rays.gathersSkipped > 0)
@@ -218,8 +222,9 @@ void runRender(RenderCommandOptions& o) {
   for (size_t k = 0; k < bounceImages.size(); ++k) {
     for (size_t p = 0; p < runningSum.pixels.size(); ++p)
       runningSum.pixels[p] += bounceImages[k].pixels[p];
-    for (const auto& [stem, image] : {std::pair<std::string, const ImageRgb*>{"bounce_", &bounceImages[k]},
-                                      {"bounce_sum_", &runningSum}}) {
+    for (const auto& [stem, image] :
+         {std::pair<std::string, const ImageRgb*>{"bounce_", &bounceImages[k]},
+          {"bounce_sum_", &runningSum}}) {
       const std::string name = stem + std::to_string(k);
       bounceFiles.push_back(std::make_unique<AtomicPath>((dir / (name + ".exr")).string()));
       writeExr(bounceFiles.back()->tempPath(), *image);
@@ -286,9 +291,9 @@ void runRender(RenderCommandOptions& o) {
     report["bounces_separate"] = {
         {"max_bounce", *o.bouncesSeparate},
         {"images", bounceNames},
-        {"term",
-         radiosity ? "bounce_k: (rho F)^k E of Jacobi radiosity, shown as interpolated B_k/pi"
-                   : "bounce_k: paths with exactly k scattering vertices (D or S): T^k L_e"}};
+        {"term", radiosity
+                     ? "bounce_k: (rho F)^k E of Jacobi radiosity, shown as interpolated B_k/pi"
+                     : "bounce_k: paths with exactly k scattering vertices (D or S): T^k L_e"}};
   }
   if (radiosity)
     report["radiosity"] = {{"elements", mesh.elementCount()},
@@ -345,9 +350,10 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
          "--gather", o->gather,
          "Final-gather rays (and shadow rays) per diffuse eye hit; 0: interpolated preview")
       ->default_val(o->gather);
-  cmd->add_option("--light-rays", o->lightRays,
-                  "Shadow rays to the emitters per diffuse eye hit of the final gather, MIS-weighted "
-                  "against the --gather rays by their counts; 0: as many as --gather")
+  cmd->add_option(
+         "--light-rays", o->lightRays,
+         "Shadow rays to the emitters per diffuse eye hit of the final gather, MIS-weighted "
+         "against the --gather rays by their counts; 0: as many as --gather")
       ->default_val(o->lightRays);
   cmd->add_option("--spp", o->spp, "Samples per pixel (default: the method's, see --method)")
       ->check(CLI::PositiveNumber);
@@ -363,8 +369,8 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
   cmd->add_option("--exposure", o->exposure,
                   "PNG exposure (default: 99th percentile of luminance maps to 1)");
   cmd->add_flag("--fresh-solve", o->freshSolve,
-               "Solve even when --out holds a solution saved by an earlier render of the same "
-               "scene and solve options (otherwise it is reused)");
+                "Solve even when --out holds a solution saved by an earlier render of the same "
+                "scene and solve options (otherwise it is reused)");
   o->solve.targetElements = kRenderElements;
   o->solve.raysPerElement = kRenderRaysPerElement;
   addSolveOptions(*cmd, o->solve, o->solverName);

@@ -16,8 +16,7 @@ double since(Clock::time_point t) {
 }
 }  // namespace
 
-RenderWorld::RenderWorld(SolveOptions solve, const std::string& cameraFile,
-                         bool reuseSavedSolution)
+RenderWorld::RenderWorld(SolveOptions solve, const std::string& cameraFile, bool reuseSavedSolution)
     : solve_(std::move(solve)), reuseSavedSolution_(reuseSavedSolution) {
   if (!cameraFile.empty()) motionSpec_ = loadMotionSpec(cameraFile);
 }

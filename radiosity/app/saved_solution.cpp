@@ -131,9 +131,8 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   const std::string jsonPath = (base / kSolutionJson).string();
   const std::string csvPath = (base / kSolutionCsv).string();
   if (!solutionIsReusable(options)) {
-    whyNot = options.keepBounceTerms
-                 ? "--bounces-separate: the Jacobi terms are not saved"
-                 : "adaptive refinement: the mesh depends on the solve";
+    whyNot = options.keepBounceTerms ? "--bounces-separate: the Jacobi terms are not saved"
+                                     : "adaptive refinement: the mesh depends on the solve";
     return std::nullopt;
   }
   if (!std::filesystem::exists(jsonPath) || !std::filesystem::exists(csvPath)) {

@@ -9,44 +9,52 @@
 namespace rad {
 
 void addCommonFlags(CLI::App& command) {
-  command.add_flag_callback("--quiet,-q", [] { setLogLevel(LogLevel::Quiet); },
-                            "Only warnings and errors on stderr");
+  command.add_flag_callback(
+      "--quiet,-q", [] { setLogLevel(LogLevel::Quiet); }, "Only warnings and errors on stderr");
 }
 
 // Options shared by every command that solves first (solve, render, bake, view).
 void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solverName) {
-  command.add_option("--solver", solverName,
-                     "progressive (lazy rows) | southwell (progressive on all rows) | gauss-seidel | jacobi")
+  command
+      .add_option(
+          "--solver", solverName,
+          "progressive (lazy rows) | southwell (progressive on all rows) | gauss-seidel | jacobi")
       ->default_val("progressive")
       ->check(CLI::IsMember({"progressive", "southwell", "gauss-seidel", "jacobi"}));
   command.add_option("--rays", options.raysPerElement, "Hemisphere rays per element")
       ->default_val(options.raysPerElement);
   command.add_option("--max-area", options.maxArea,
                      "Largest element area in scene units² (default: total area / --elements)");
-  command.add_option("--elements", options.targetElements,
-                     "Approximate element count when --max-area is not given")
+  command
+      .add_option("--elements", options.targetElements,
+                  "Approximate element count when --max-area is not given")
       ->default_val(options.targetElements)
       ->check(CLI::PositiveNumber);
   command.add_option("--seed", options.seed, "Random seed")->default_val(options.seed);
   command.add_option("--threads", options.threads, "Worker threads (0: all cores)")
       ->default_val(options.threads);
-  command.add_option("--tolerance", options.tolerance,
-                     "Stop at this relative residual (gauss-seidel, jacobi) or unshot fraction "
-                     "(progressive, southwell)")
+  command
+      .add_option("--tolerance", options.tolerance,
+                  "Stop at this relative residual (gauss-seidel, jacobi) or unshot fraction "
+                  "(progressive, southwell)")
       ->default_val(options.tolerance);
   command.add_option("--max-iterations", options.maxIterations,
                      "Iteration budget: sweeps, bounces or shots (0: solver default)");
   command.add_option("--bounces", options.bounces, "Jacobi only: exactly N bounces of light");
-  command.add_option_function<std::string>(
-             "--form-factors",
-             [&options](const std::string& name) { options.formFactors = parseFormFactorMethod(name); },
-             "hemisphere (ray-cast rows per element) | analytic (point-to-polygon + shadow rays, "
-             "patches shoot to elements)")
+  command
+      .add_option_function<std::string>(
+          "--form-factors",
+          [&options](const std::string& name) {
+            options.formFactors = parseFormFactorMethod(name);
+          },
+          "hemisphere (ray-cast rows per element) | analytic (point-to-polygon + shadow rays, "
+          "patches shoot to elements)")
       ->check(CLI::IsMember({"hemisphere", "analytic"}));
   command.add_option("--patch-area", options.patchArea,
                      "analytic: largest shooting patch area (default 8 × the element area)");
-  command.add_option("--shadow-rays", options.shadowRays,
-                     "analytic: visibility rays per receiver point and patch")
+  command
+      .add_option("--shadow-rays", options.shadowRays,
+                  "analytic: visibility rays per receiver point and patch")
       ->default_val(options.shadowRays);
   command.add_option("--refine-threshold", options.refineThreshold,
                      "adaptive refinement (analytic, progressive): elements whose displayed "
@@ -55,18 +63,22 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
                      "area × error² first (0: uniform mesh only)");
   command.add_option("--min-area", options.minArea,
                      "refinement: smallest element area (default: total area / max elements / 16)");
-  command.add_option("--max-elements", options.maxElements,
-                     "refinement: element budget, spent over the passes (default: 8 × the uniform mesh)");
-  command.add_option("--refine-passes", options.refinePasses,
-                     "refinement: solve-and-refine rounds; each grows the mesh by the same factor "
-                     "towards --max-elements")
+  command.add_option(
+      "--max-elements", options.maxElements,
+      "refinement: element budget, spent over the passes (default: 8 × the uniform mesh)");
+  command
+      .add_option("--refine-passes", options.refinePasses,
+                  "refinement: solve-and-refine rounds; each grows the mesh by the same factor "
+                  "towards --max-elements")
       ->default_val(options.refinePasses);
-  command.add_option("--time-limit", options.timeLimit,
-                     "Stop iterating after this many seconds and keep the solution so far, flagged "
-                     "as not converged in summary.json (0: no limit)")
+  command
+      .add_option("--time-limit", options.timeLimit,
+                  "Stop iterating after this many seconds and keep the solution so far, flagged "
+                  "as not converged in summary.json (0: no limit)")
       ->check(CLI::NonNegativeNumber);
-  command.add_option("--receiver-points", options.receiverPoints,
-                     "analytic: sample points per element, 1 or 3")
+  command
+      .add_option("--receiver-points", options.receiverPoints,
+                  "analytic: sample points per element, 1 or 3")
       ->default_val(options.receiverPoints);
 }
 
@@ -74,8 +86,10 @@ void registerSolveCommand(CLI::App& app, CommandAction& run) {
   auto options = std::make_shared<SolveOptions>();
   auto solverName = std::make_shared<std::string>("progressive");
   CLI::App* solve = app.add_subcommand("solve", "Solve the diffuse radiosity of a scene");
-  solve->add_option("scene", options->scenePath, "OBJ scene file (materials from its MTL)")->required();
-  solve->add_option("--out", options->outputDir, "Output directory (created if missing)")->required();
+  solve->add_option("scene", options->scenePath, "OBJ scene file (materials from its MTL)")
+      ->required();
+  solve->add_option("--out", options->outputDir, "Output directory (created if missing)")
+      ->required();
   addSolveOptions(*solve, *options, *solverName);
   addCommonFlags(*solve);
   solve->callback([&run, options, solverName] {

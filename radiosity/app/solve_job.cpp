@@ -8,11 +8,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "meshing/adaptive_refinement.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/progress.h"
-#include "meshing/adaptive_refinement.h"
 #include "radiosity/formfactors/analytic_patch_shots.h"
 #include "radiosity/formfactors/form_factor_cache.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
@@ -30,7 +30,9 @@ using Clock = std::chrono::steady_clock;
 // Limits checked before the work starts, so absurd options fail at once with a clear message.
 constexpr int kMaxRaysPerElement = 1 << 24;  // × 64 for emitter rows still fits an int
 constexpr double kMaxElements = 4e6;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 std::string formatNumber(double v) {
   std::ostringstream s;
@@ -49,9 +51,12 @@ void note(SolveResult& result, std::string what, std::string why) {
 int defaultMaxIterations(SolverKind kind, int elements) {
   switch (kind) {
     case SolverKind::Progressive:
-    case SolverKind::Southwell: return std::max(100000, 200 * elements);
-    case SolverKind::GaussSeidel: return 10000;
-    case SolverKind::Jacobi: return 10000;
+    case SolverKind::Southwell:
+      return std::max(100000, 200 * elements);
+    case SolverKind::GaussSeidel:
+      return 10000;
+    case SolverKind::Jacobi:
+      return 10000;
   }
   return 10000;
 }
@@ -82,15 +87,20 @@ SolverKind parseSolverKind(const std::string& name) {
   if (name == "southwell") return SolverKind::Southwell;
   if (name == "gauss-seidel") return SolverKind::GaussSeidel;
   if (name == "jacobi") return SolverKind::Jacobi;
-  throw InputError("unknown solver '" + name + "' (expected progressive, southwell, gauss-seidel or jacobi)");
+  throw InputError("unknown solver '" + name +
+                   "' (expected progressive, southwell, gauss-seidel or jacobi)");
 }
 
 std::string solverKindName(SolverKind kind) {
   switch (kind) {
-    case SolverKind::Progressive: return "progressive";
-    case SolverKind::Southwell: return "southwell";
-    case SolverKind::GaussSeidel: return "gauss-seidel";
-    case SolverKind::Jacobi: return "jacobi";
+    case SolverKind::Progressive:
+      return "progressive";
+    case SolverKind::Southwell:
+      return "southwell";
+    case SolverKind::GaussSeidel:
+      return "gauss-seidel";
+    case SolverKind::Jacobi:
+      return "jacobi";
   }
   return "?";
 }
@@ -99,7 +109,8 @@ std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMes
   std::vector<SpecularSurface> surfaces(mesh.elementCount());
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const Material& m = scene.materials[mesh.material(e)];
-    if (m.kind == SurfaceKind::Mirror) surfaces[e] = {SpecularSurface::Kind::Mirror, m.specular, Rgb::all(1), 1};
+    if (m.kind == SurfaceKind::Mirror)
+      surfaces[e] = {SpecularSurface::Kind::Mirror, m.specular, Rgb::all(1), 1};
     if (m.kind == SurfaceKind::Dielectric)
       surfaces[e] = {SpecularSurface::Kind::Dielectric, Rgb::all(1), m.transmittance, m.ior};
   }
@@ -124,7 +135,7 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
 
 uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays,
                                   int receiverPoints) {
-  constexpr uint64_t kBytesPerEntry = 12;  // 4-byte column index + 8-byte value
+  constexpr uint64_t kBytesPerEntry = 12;   // 4-byte column index + 8-byte value
   constexpr uint64_t kBytesPerPoints = 12;  // 3 single-precision point factors
   const uint64_t n = static_cast<uint64_t>(std::max(elements, 0));
   if (method == FormFactorMethod::Analytic)
@@ -145,23 +156,26 @@ uint64_t availableMemoryBytes() {
 void checkFormFactorMemory(uint64_t needed, uint64_t available, FormFactorMethod method) {
   if (available == 0 || needed <= available) return;
   const auto gib = [](uint64_t bytes) { return formatNumber(bytes / double(1ull << 30)) + " GiB"; };
-  throw InputError("the form-factor rows may need up to " + gib(needed) + " but only " + gib(available) +
-                   " of memory is available: " +
-                   (method == FormFactorMethod::Analytic
-                        ? "raise --patch-area (fewer shooting patches) or --max-area (fewer elements), "
-                          "or lower --elements"
-                        : "lower --elements or raise --max-area (fewer elements), or lower --rays"));
+  throw InputError(
+      "the form-factor rows may need up to " + gib(needed) + " but only " + gib(available) +
+      " of memory is available: " +
+      (method == FormFactorMethod::Analytic
+           ? "raise --patch-area (fewer shooting patches) or --max-area (fewer elements), "
+             "or lower --elements"
+           : "lower --elements or raise --max-area (fewer elements), or lower --rays"));
 }
 
 void checkSceneLimits(const Scene& scene) {
   if (scene.polygons.size() > kMaxElements)
     throw InputError(scene.sourcePath, 0,
-                     std::to_string(scene.polygons.size()) + " polygons, more than the element limit " +
-                         formatNumber(kMaxElements) + ": every polygon needs at least one element");
+                     std::to_string(scene.polygons.size()) +
+                         " polygons, more than the element limit " + formatNumber(kMaxElements) +
+                         ": every polygon needs at least one element");
   // Beyond this, double precision leaves less than a millimetre-per-kilometre of resolution and
   // Embree's single-precision BVH cannot separate nearby surfaces.
   for (std::size_t i = 0; i < scene.positions.size(); ++i)
-    if (!scene.positions[i].allFinite() || !(scene.positions[i].cwiseAbs().maxCoeff() <= kMaxCoordinate))
+    if (!scene.positions[i].allFinite() ||
+        !(scene.positions[i].cwiseAbs().maxCoeff() <= kMaxCoordinate))
       throw InputError(scene.sourcePath, 0,
                        "vertex " + std::to_string(i + 1) + " has a coordinate beyond " +
                            formatNumber(kMaxCoordinate) + " scene units: rescale the scene");
@@ -211,12 +225,15 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     throw InputError("--receiver-points must be 1 or 3");
   if (options.patchArea < 0 || !std::isfinite(options.patchArea))
     throw InputError("--patch-area must be a positive number");
-  if (options.refineThreshold < 0 || options.minArea < 0 || options.maxElements < 0 || options.refinePasses < 0)
-    throw InputError("--refine-threshold, --min-area, --max-elements and --refine-passes must be non-negative");
-  if (options.refineThreshold > 0 &&
-      (options.formFactors != FormFactorMethod::Analytic || options.solver != SolverKind::Progressive))
-    throw InputError("adaptive refinement (--refine-threshold) needs --form-factors analytic and "
-                     "--solver progressive: patches keep shooting while the elements are refined");
+  if (options.refineThreshold < 0 || options.minArea < 0 || options.maxElements < 0 ||
+      options.refinePasses < 0)
+    throw InputError(
+        "--refine-threshold, --min-area, --max-elements and --refine-passes must be non-negative");
+  if (options.refineThreshold > 0 && (options.formFactors != FormFactorMethod::Analytic ||
+                                      options.solver != SolverKind::Progressive))
+    throw InputError(
+        "adaptive refinement (--refine-threshold) needs --form-factors analytic and "
+        "--solver progressive: patches keep shooting while the elements are refined");
   if (!(options.timeLimit >= 0) || !std::isfinite(options.timeLimit))
     throw InputError("--time-limit must be a non-negative number of seconds");
   if (options.bounces >= 0 && options.solver != SolverKind::Jacobi)
@@ -235,36 +252,41 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   if (!specular)
     note(result, "specular continuation", "the scene has no mirror or glass material");
   else if (options.formFactors == FormFactorMethod::Analytic)
-    logWarning("analytic form factors do not follow mirrors and glass: they absorb light in this "
-               "pass; use --form-factors hemisphere for light carried through them");
+    logWarning(
+        "analytic form factors do not follow mirrors and glass: they absorb light in this "
+        "pass; use --form-factors hemisphere for light carried through them");
 
   auto t = Clock::now();
   result.mesh = std::make_unique<PatchMesh>(buildPatchMesh(result.scene));
   checkPatchAreas(*result.mesh, result.scene);
   const double totalArea = result.mesh->totalArea();
   if (!(totalArea > 0) || !std::isfinite(totalArea))
-    throw InputError(result.scene.sourcePath, 0,
-                     "the polygons triangulate to no area (self-intersecting or degenerate faces?)");
+    throw InputError(
+        result.scene.sourcePath, 0,
+        "the polygons triangulate to no area (self-intersecting or degenerate faces?)");
   result.maxArea = options.maxArea > 0 ? options.maxArea : totalArea / options.targetElements;
   // Decided before any work: bisection gives at most about 2·totalArea/maxArea elements.
   if (totalArea / result.maxArea > kMaxElements)
-    throw InputError("about " + formatNumber(totalArea / result.maxArea) + " elements requested (limit " +
-                     formatNumber(kMaxElements) + "): raise --max-area or lower --elements");
+    throw InputError("about " + formatNumber(totalArea / result.maxArea) +
+                     " elements requested (limit " + formatNumber(kMaxElements) +
+                     "): raise --max-area or lower --elements");
   {
     // Also decided before any work: the worst case of the form-factor rows must fit in memory.
     const double elements = std::ceil(totalArea / result.maxArea);
     const double patches = options.formFactors == FormFactorMethod::Analytic
-                               ? std::ceil(totalArea / (options.patchArea > 0 ? options.patchArea : 8 * result.maxArea))
+                               ? std::ceil(totalArea / (options.patchArea > 0 ? options.patchArea
+                                                                              : 8 * result.maxArea))
                                : elements;
     checkFormFactorMemory(formFactorMemoryEstimate(options.formFactors, static_cast<int>(elements),
-                                                   static_cast<int>(std::min(patches, elements)), options.raysPerElement,
-                                                   options.receiverPoints),
+                                                   static_cast<int>(std::min(patches, elements)),
+                                                   options.raysPerElement, options.receiverPoints),
                           availableMemoryBytes(), options.formFactors);
   }
   if (options.formFactors == FormFactorMethod::Analytic) {
     // Shooting patches first (coarser), then elements inside them.
     const double patchArea = options.patchArea > 0 ? options.patchArea : 8 * result.maxArea;
-    if (patchArea < result.maxArea) throw InputError("--patch-area must not be below the element area");
+    if (patchArea < result.maxArea)
+      throw InputError("--patch-area must not be below the element area");
     result.mesh->subdivideUniform(patchArea);
     result.mesh->markShooters();
   }
@@ -293,9 +315,10 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
 
   // Form factors: hemisphere rows per element, or analytic element-to-patch factors with
   // patches (coarser shooters) marked on the mesh before it is refined to elements.
-  HemisphereFormFactors method(mesh, rays,
-                               {options.raysPerElement, options.seed, emitterRayMultipliers(problem),
-                                specular ? specularSurfaces(result.scene, mesh) : std::vector<SpecularSurface>()});
+  HemisphereFormFactors method(
+      mesh, rays,
+      {options.raysPerElement, options.seed, emitterRayMultipliers(problem),
+       specular ? specularSurfaces(result.scene, mesh) : std::vector<SpecularSurface>()});
   FormFactorCache cache(method);
   std::unique_ptr<AnalyticPatchShots> analytic;
   if (options.formFactors == FormFactorMethod::Analytic)
@@ -317,8 +340,9 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   std::unique_ptr<Solver> solver;
   std::unique_ptr<GatheringColumns> columns;
   double tolerance = options.tolerance;
-  int maxIterations = options.maxIterations > 0 ? options.maxIterations
-                                                : defaultMaxIterations(options.solver, mesh.elementCount());
+  int maxIterations = options.maxIterations > 0
+                          ? options.maxIterations
+                          : defaultMaxIterations(options.solver, mesh.elementCount());
   if (options.solver == SolverKind::Progressive) {
     solver = std::make_unique<ProgressiveSolver>(problem, shots);
   } else {
@@ -354,7 +378,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   // budget were spread evenly, so shadow edges can be resolved well below the even spacing.
   const int budget = options.maxElements > 0 ? options.maxElements : 8 * mesh.elementCount();
   RefinementOptions refinement{options.refineThreshold,
-                               options.minArea > 0 ? options.minArea : totalArea / budget / 16, budget};
+                               options.minArea > 0 ? options.minArea : totalArea / budget / 16,
+                               budget};
   result.elementsBeforeRefinement = mesh.elementCount();
   int unrefined = -1;  // elements the last refinement pass left alone
   for (int pass = 0;; ++pass) {
@@ -380,14 +405,15 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
       }
       if (tolerance > 0 && solver->progress() > 0) {
         // Fraction of the way, on a log scale, from the starting measure to the tolerance.
-        const double f = std::log(startMeasure / solver->progress()) / std::log(startMeasure / tolerance);
-        progress.setFraction(std::clamp(f, 0.0, 1.0), solver->progressMeasure() + " " +
-                                                          formatNumber(solver->progress()));
+        const double f =
+            std::log(startMeasure / solver->progress()) / std::log(startMeasure / tolerance);
+        progress.setFraction(std::clamp(f, 0.0, 1.0),
+                             solver->progressMeasure() + " " + formatNumber(solver->progress()));
       }
     }
     result.converged = !outOfTime && (options.bounces >= 0 ? solver->iterations() == options.bounces
                                                            : solver->progress() <= tolerance);
-    result.stoppedBy = outOfTime ? "time limit"
+    result.stoppedBy = outOfTime          ? "time limit"
                        : result.converged ? (options.bounces >= 0 ? "bounces" : "tolerance")
                                           : "iteration limit";
     progress.finish(solver->progressMeasure() + " " + formatNumber(solver->progress()) +
@@ -407,14 +433,15 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
       selected = selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
     } else {
       std::vector<double> luminance(mesh.elementCount());
-      for (int e = 0; e < mesh.elementCount(); ++e) luminance[e] = solver->solution()[e].luminance();
+      for (int e = 0; e < mesh.elementCount(); ++e)
+        luminance[e] = solver->solution()[e].luminance();
       selected = selectForRefinement(mesh, luminance, analytic->partlyShadowed(), refinement);
     }
     unrefined = mesh.elementCount() - static_cast<int>(selected.size());
     if (selected.empty()) break;
     const int before = mesh.elementCount();
-    const int target = refinementTarget(result.elementsBeforeRefinement, refinement.maxElements, pass,
-                                        std::max(1, options.refinePasses));
+    const int target = refinementTarget(result.elementsBeforeRefinement, refinement.maxElements,
+                                        pass, std::max(1, options.refinePasses));
     const std::vector<int> changed = refineElements(*result.mesh, selected, refinement, target);
     result.problem = makeProblem(result.scene, mesh);
     analytic->meshChanged(changed);
@@ -439,7 +466,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
 
   result.radiosity = solver->solution();
   const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver.get());
-  if (shooting && analytic && options.receiverPoints == 3) result.pointRadiosity = shooting->pointSolution();
+  if (shooting && analytic && options.receiverPoints == 3)
+    result.pointRadiosity = shooting->pointSolution();
   const std::vector<Rgb> unshot = shooting ? shooting->unshotPowerOfElements() : std::vector<Rgb>();
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const Rgb& b = result.radiosity[e];
@@ -459,20 +487,21 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     if (!analytic)
       for (int e = 0; e < mesh.elementCount(); ++e)
         if (!cache.hasRow(e)) raysSaved += method.raysForRow(e);
-    note(result, "form-factor rows of " + std::to_string(result.shooters - result.rowsComputed) +
-                     (analytic ? " patches" : " elements") +
-                     (analytic ? std::string() : " (" + std::to_string(raysSaved) + " rays saved)"),
+    note(result,
+         "form-factor rows of " + std::to_string(result.shooters - result.rowsComputed) +
+             (analytic ? " patches" : " elements") +
+             (analytic ? std::string() : " (" + std::to_string(raysSaved) + " rays saved)"),
          options.solver == SolverKind::Progressive ? "they never held unshot power worth shooting"
                                                    : "black elements pass no light on");
   }
   if (analytic)
-    note(result,
-         "shadow rays between element–patch pairs facing away from each other or coplanar",
+    note(result, "shadow rays between element–patch pairs facing away from each other or coplanar",
          "they cannot exchange light; the pairs are not counted");
   if (result.stoppedBy == "time limit")
     logWarning("time limit of " + formatNumber(options.timeLimit) + " s reached after " +
                std::to_string(result.iterations) + " iterations: writing the solution so far (" +
-               solver->progressMeasure() + " " + formatNumber(result.finalProgress) + ", not converged)");
+               solver->progressMeasure() + " " + formatNumber(result.finalProgress) +
+               ", not converged)");
   else if (!result.converged && options.bounces < 0)
     logWarning("stopped after " + std::to_string(result.iterations) + " iterations with " +
                solver->progressMeasure() + " " + formatNumber(result.finalProgress) +

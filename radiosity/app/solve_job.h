@@ -26,13 +26,13 @@ struct SolveOptions {
   std::string outputDir;
   SolverKind solver = SolverKind::Progressive;
   int raysPerElement = 1024;
-  double maxArea = 0;          // scene units²; 0: totalArea / targetElements
-  int targetElements = 1500;   // used when maxArea is 0
+  double maxArea = 0;         // scene units²; 0: totalArea / targetElements
+  int targetElements = 1500;  // used when maxArea is 0
   uint64_t seed = 1;
-  int threads = 0;             // 0: all hardware threads
+  int threads = 0;  // 0: all hardware threads
   double tolerance = 1e-4;
-  int maxIterations = 0;       // 0: a default per solver
-  int bounces = -1;            // Jacobi only: exactly this many bounces (overrides tolerance)
+  int maxIterations = 0;         // 0: a default per solver
+  int bounces = -1;              // Jacobi only: exactly this many bounces (overrides tolerance)
   bool keepBounceTerms = false;  // Jacobi only: keep each iteration's term (rho F)^k E
   FormFactorMethod formFactors = FormFactorMethod::Hemisphere;
   double patchArea = 0;        // analytic: largest shooting patch (scene units²); 0: 8 × max area
@@ -40,11 +40,11 @@ struct SolveOptions {
   int receiverPoints = 3;      // analytic: 1 (centroid) or 3 (Gauss points) per element
   double refineThreshold = 0;  // adaptive refinement: relative error of the displayed radiance
                                // that makes an element a candidate for splitting; 0: off
-  double minArea = 0;          // refinement: smallest element area; 0: total area / max elements / 16
-  int maxElements = 0;         // refinement: element budget; 0: 8 × the uniform mesh's count
-  int refinePasses = 8;        // refinement: solve–refine rounds
-  double timeLimit = 0;        // seconds from the start of the solve; 0: none. Past it the
-                               // iterations stop and the solution so far is kept (not converged)
+  double minArea = 0;    // refinement: smallest element area; 0: total area / max elements / 16
+  int maxElements = 0;   // refinement: element budget; 0: 8 × the uniform mesh's count
+  int refinePasses = 8;  // refinement: solve–refine rounds
+  double timeLimit = 0;  // seconds from the start of the solve; 0: none. Past it the
+                         // iterations stop and the solution so far is kept (not converged)
 };
 
 // Something the run decided not to do, and why (reported in the log and summary.json).
@@ -71,14 +71,14 @@ struct SolveResult {
   int iterations = 0;
   int refinementPasses = 0;
   int elementsBeforeRefinement = 0;
-  double finalProgress = 0;    // residual or unshot fraction reached
+  double finalProgress = 0;  // residual or unshot fraction reached
   bool converged = false;
-  std::string stoppedBy;       // "tolerance", "bounces", "iteration limit" or "time limit"
+  std::string stoppedBy;  // "tolerance", "bounces", "iteration limit" or "time limit"
   double maxArea = 0;
   std::string formFactorMethod;
-  int shooters = 0;            // elements (hemisphere) or shooting patches (analytic)
+  int shooters = 0;  // elements (hemisphere) or shooting patches (analytic)
   int rowsComputed = 0;
-  uint64_t specularRays = 0;   // continuations through mirrors and glass
+  uint64_t specularRays = 0;  // continuations through mirrors and glass
   uint64_t raysCast = 0;
   int threads = 0;
   StageTimes times;

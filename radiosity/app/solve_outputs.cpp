@@ -1,8 +1,7 @@
 // Writing a finished solve: elements.csv, vertex_colors.ply and summary.json.
-#include <nlohmann/json.hpp>
-
 #include <chrono>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/app/solve_job.h"
@@ -96,9 +95,11 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   writeElementsCsv(csv.stream(), mesh, result.radiosity);
 
   const VertexInterpolation interpolation(mesh);
-  const std::vector<Rgb> vertexRadiance = interpolateVertexRadiance(interpolation, result.radiosity, result.pointRadiosity);
+  const std::vector<Rgb> vertexRadiance =
+      interpolateVertexRadiance(interpolation, result.radiosity, result.pointRadiosity);
   std::vector<Rgb> elementRadiance(result.radiosity.size());
-  for (size_t e = 0; e < elementRadiance.size(); ++e) elementRadiance[e] = result.radiosity[e] / M_PI;
+  for (size_t e = 0; e < elementRadiance.size(); ++e)
+    elementRadiance[e] = result.radiosity[e] / M_PI;
   const ToneMap toneMap = ToneMap::autoExposure(elementRadiance, result.problem.area);
   AtomicFile ply((dir / "vertex_colors.ply").string(), /*binary=*/true);
   writeVertexColorsPly(ply.stream(), interpolation, mesh, vertexRadiance, toneMap);
@@ -115,7 +116,8 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   files.push_back(&vtp);
 #endif
 
-  result.times.output = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.times.output =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.times.total += result.times.output;
   AtomicFile summary((dir / "summary.json").string());
   summary.stream() << summaryJson(options, result, toneMap.exposure).dump(2) << "\n";

@@ -39,7 +39,8 @@ class ViewerSolve final : public LiveSolution {
     const int n = result.mesh->elementCount();
     tolerance_ = options.tolerance;
     // The budgets solveScene uses by default.
-    maxIterations_ = options.maxIterations > 0 ? options.maxIterations : defaultMaxIterations(options.solver, n);
+    maxIterations_ =
+        options.maxIterations > 0 ? options.maxIterations : defaultMaxIterations(options.solver, n);
     if (options.solver == SolverKind::Jacobi && options.bounces >= 0)
       maxIterations_ = options.bounces, tolerance_ = 0;
     if (options.formFactors == FormFactorMethod::Analytic)

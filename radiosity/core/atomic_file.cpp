@@ -62,7 +62,8 @@ std::string temporaryName(const std::string& path) {
 }
 }  // namespace
 
-AtomicPath::AtomicPath(std::string path) : path_(std::move(path)), tempPath_(temporaryName(path_)) {}
+AtomicPath::AtomicPath(std::string path)
+    : path_(std::move(path)), tempPath_(temporaryName(path_)) {}
 
 AtomicPath::~AtomicPath() {
   if (!committed_) std::remove(tempPath_.c_str());

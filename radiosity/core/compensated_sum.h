@@ -15,7 +15,10 @@ class CompensatedSum {
       compensation_ += (x - t) + sum_;
     sum_ = t;
   }
-  CompensatedSum& operator+=(double x) { add(x); return *this; }
+  CompensatedSum& operator+=(double x) {
+    add(x);
+    return *this;
+  }
   double value() const { return sum_ + compensation_; }
 
  private:

@@ -18,8 +18,12 @@ void emit(const char* prefix, const std::string& message) {
 
 void setLogLevel(LogLevel level) { g_level = level; }
 LogLevel logLevel() { return g_level; }
-void logInfo(const std::string& m) { if (g_level >= LogLevel::Info) emit("", m); }
+void logInfo(const std::string& m) {
+  if (g_level >= LogLevel::Info) emit("", m);
+}
 void logWarning(const std::string& m) { emit("warning: ", m); }
-void logDebug(const std::string& m) { if (g_level >= LogLevel::Debug) emit("debug: ", m); }
+void logDebug(const std::string& m) {
+  if (g_level >= LogLevel::Debug) emit("debug: ", m);
+}
 
 }  // namespace rad

@@ -13,8 +13,10 @@ std::mutex g_drawMutex;
 
 std::string formatSeconds(double s) {
   char buf[32];
-  if (s < 60) std::snprintf(buf, sizeof buf, "%.1fs", s);
-  else std::snprintf(buf, sizeof buf, "%dm%02ds", int(s) / 60, int(s) % 60);
+  if (s < 60)
+    std::snprintf(buf, sizeof buf, "%.1fs", s);
+  else
+    std::snprintf(buf, sizeof buf, "%dm%02ds", int(s) / 60, int(s) % 60);
   return buf;
 }
 }  // namespace
@@ -22,7 +24,10 @@ std::string formatSeconds(double s) {
 bool Progress::stderrIsTerminal() { return isatty(STDERR_FILENO) == 1; }
 
 Progress::Progress(std::string label, uint64_t total, std::string unit)
-    : label_(std::move(label)), unit_(std::move(unit)), total_(total), start_(Clock::now()),
+    : label_(std::move(label)),
+      unit_(std::move(unit)),
+      total_(total),
+      start_(Clock::now()),
       terminal_(stderrIsTerminal() && logLevel() >= LogLevel::Info) {}
 
 Progress::~Progress() {
@@ -32,8 +37,8 @@ Progress::~Progress() {
 void Progress::advance(uint64_t n) {
   done_ += n;
   if (!terminal_) return;
-  const int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                          Clock::now().time_since_epoch()).count();
+  const int64_t now =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
   int64_t last = lastDrawNs_.load();
   if (now - last < 100000000) return;  // 10 Hz
   if (lastDrawNs_.compare_exchange_strong(last, now)) draw(false);

@@ -48,7 +48,8 @@ class Rng {
  private:
   double next53() {
     const uint64_t hi = next() >> 5, lo = next() >> 6;
-    return (static_cast<double>(hi) * 67108864.0 + static_cast<double>(lo)) * (1.0 / 9007199254740992.0);
+    return (static_cast<double>(hi) * 67108864.0 + static_cast<double>(lo)) *
+           (1.0 / 9007199254740992.0);
   }
   uint64_t state_ = 0, inc_ = 1;
 };

@@ -52,7 +52,8 @@ void AnalyticPatchShots::updateElementGeometry(int e) {
   normals_[e] = mesh_.normal(e);
   centroids_[e] = (c[0] + c[1] + c[2]) / 3.0;
   // Degree-2 Gauss points (barycentric 2/3, 1/6, 1/6): interior, so never on a shared edge.
-  for (int k = 0; k < 3; ++k) receiverPoints_[e][k] = (4.0 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6.0;
+  for (int k = 0; k < 3; ++k)
+    receiverPoints_[e][k] = (4.0 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6.0;
 }
 
 void AnalyticPatchShots::meshChanged(const std::vector<int>& changed) {
@@ -73,9 +74,11 @@ void AnalyticPatchShots::meshChanged(const std::vector<int>& changed) {
   for (int s = 0; s < shooterCount(); ++s) {
     if (!rows_[s]) continue;
     std::vector<std::array<double, 3>> fresh(changed.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t k = r.begin(); k != r.end(); ++k) fresh[k] = elementToShooterAtPoints(changed[k], s);
-    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 16),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t k = r.begin(); k != r.end(); ++k)
+                          fresh[k] = elementToShooterAtPoints(changed[k], s);
+                      });
     // Unchanged receivers keep their entries as they were; changed ones get the fresh factors.
     const FormFactorRow& old = *rows_[s];
     auto row = std::make_unique<FormFactorRow>();
@@ -114,7 +117,8 @@ double AnalyticPatchShots::elementToShooter(int receiver, int shooter) const {
   return options_.receiverPoints == 1 ? f[0] : (f[0] + f[1] + f[2]) / 3;
 }
 
-std::array<double, 3> AnalyticPatchShots::elementToShooterAtPoints(int receiver, int shooter) const {
+std::array<double, 3> AnalyticPatchShots::elementToShooterAtPoints(int receiver,
+                                                                   int shooter) const {
   const std::array<double, 3> none{0.0, 0.0, 0.0};
   if (mesh_.shooter(receiver) == shooter) return none;
   const auto source = mesh_.shooterCorners(shooter);
@@ -132,7 +136,8 @@ std::array<double, 3> AnalyticPatchShots::elementToShooterAtPoints(int receiver,
   const int points = options_.receiverPoints;
   const int m = options_.shadowRays;
   const int g = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(m))));
-  Rng rng(streamKey(options_.seed, static_cast<uint64_t>(receiver), static_cast<uint64_t>(shooter)));
+  Rng rng(
+      streamKey(options_.seed, static_cast<uint64_t>(receiver), static_cast<uint64_t>(shooter)));
   std::array<double, 3> atPoint = none;
   // A shadow edge crosses the element when one receiver point sees the patch in part, or when
   // some points see it and others do not (the edge passes between them).
@@ -164,7 +169,8 @@ std::array<double, 3> AnalyticPatchShots::elementToShooterAtPoints(int receiver,
     atPoint[k] = unoccluded * visible / inFront;
   }
   // Benign race: every writer stores 1.
-  if ((partial || (someSee && someBlocked)) && (shadowCasters_.empty() || shadowCasters_[shooter])) partlyShadowed_[receiver] = 1;
+  if ((partial || (someSee && someBlocked)) && (shadowCasters_.empty() || shadowCasters_[shooter]))
+    partlyShadowed_[receiver] = 1;
   if (points == 1) atPoint[1] = atPoint[2] = atPoint[0];
   return atPoint;
 }
@@ -174,14 +180,16 @@ double AnalyticPatchShots::elementToShooterCached(int receiver, int shooter) con
   return rows_[shooter]->valueFor(receiver) * shooterArea_[shooter] / mesh_.area(receiver);
 }
 
-std::array<double, 3> AnalyticPatchShots::elementToShooterAtPointsCached(int receiver, int shooter) const {
+std::array<double, 3> AnalyticPatchShots::elementToShooterAtPointsCached(int receiver,
+                                                                         int shooter) const {
   const FormFactorRow* row = rows_[shooter].get();
   if (!row) return elementToShooterAtPoints(receiver, shooter);
   const double scale = shooterArea_[shooter] / mesh_.area(receiver);
   const auto it = std::lower_bound(row->targets.begin(), row->targets.end(), receiver);
   if (it == row->targets.end() || *it != receiver) return {0.0, 0.0, 0.0};
   const size_t k = it - row->targets.begin();
-  if (row->points.empty()) return {row->values[k] * scale, row->values[k] * scale, row->values[k] * scale};
+  if (row->points.empty())
+    return {row->values[k] * scale, row->values[k] * scale, row->values[k] * scale};
   return {row->points[k][0] * scale, row->points[k][1] * scale, row->points[k][2] * scale};
 }
 
@@ -203,7 +211,8 @@ const FormFactorRow& AnalyticPatchShots::powerFractions(int shooter) {
   return *rows_[shooter];
 }
 
-Eigen::SparseMatrix<double, Eigen::RowMajor> AnalyticPatchShots::gatheringMatrix(Progress* progress) {
+Eigen::SparseMatrix<double, Eigen::RowMajor> AnalyticPatchShots::gatheringMatrix(
+    Progress* progress) {
   std::vector<std::vector<int>> elementsOf(shooterCount());
   for (int e = 0; e < mesh_.elementCount(); ++e) elementsOf[mesh_.shooter(e)].push_back(e);
   std::vector<Eigen::Triplet<double>> entries;

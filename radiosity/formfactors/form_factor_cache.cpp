@@ -33,13 +33,13 @@ void FormFactorCache::computeRows(const std::vector<bool>& needed, Progress* pro
   for (int i = 0; i < elementCount(); ++i)
     if (needed[i] && !rows_[i]) todo.push_back(i);
   const auto start = std::chrono::steady_clock::now();
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, todo.size(), 8),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t k = range.begin(); k != range.end(); ++k) {
-                        rows_[todo[k]] = std::make_unique<FormFactorRow>(method_.computeRow(todo[k]));
-                        if (progress) progress->advance(method_.raysForRow(todo[k]));
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, todo.size(), 8), [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t k = range.begin(); k != range.end(); ++k) {
+          rows_[todo[k]] = std::make_unique<FormFactorRow>(method_.computeRow(todo[k]));
+          if (progress) progress->advance(method_.raysForRow(todo[k]));
+        }
+      });
   rowsComputed_ += static_cast<int>(todo.size());
   for (int i : todo) raysCast_ += method_.raysForRow(i);
   seconds_ += secondsSince(start);

@@ -36,7 +36,9 @@ namespace {
 
 // SplitMix64 output k of the generator keyed by `key`: counter-based, so any ray's random numbers
 // come straight from (row key, ray index), on any thread, in any order.
-inline uint64_t splitMix(uint64_t key, uint64_t k) { return mix64(key + k * 0x9e3779b97f4a7c15ull); }
+inline uint64_t splitMix(uint64_t key, uint64_t k) {
+  return mix64(key + k * 0x9e3779b97f4a7c15ull);
+}
 // Uniform integer in [0, n) without a division in the common case (Lemire 2019, unbiased).
 inline uint32_t below(Rng& rng, uint32_t n) {
   uint64_t m = static_cast<uint64_t>(rng.next()) * n;
@@ -87,7 +89,7 @@ thread_local std::vector<std::vector<int>> RowBuffer::free_;
 struct HemisphereFormFactors::RayBlock {
   static constexpr int kSize = 64;
   int count = 0;
-  alignas(64) int32_t jitter[4][kSize];  // 23 random bits per uniform
+  alignas(64) int32_t jitter[4][kSize];      // 23 random bits per uniform
   alignas(64) int32_t directionCell[kSize];  // stratum (y << 16 | x) of the direction grid
   alignas(64) float u[4][kSize];  // direction (cos² theta, azimuth turn), position on the triangle
   alignas(64) double origin[3][kSize];
@@ -102,7 +104,8 @@ HemisphereFormFactors::RowSampler::RowSampler(const HemisphereFormFactors& owner
     : count_(owner.raysForRow(element)), positionCell_(positionCell) {
   const Frame frame(owner.normals_[element]);
   const auto corners = owner.mesh_.corners(element);
-  const Eigen::Vector3d base = owner.rays_.liftOff(corners[0], frame.normal, frame.normal) - owner.rays_.centre();
+  const Eigen::Vector3d base =
+      owner.rays_.liftOff(corners[0], frame.normal, frame.normal) - owner.rays_.centre();
   for (int d = 0; d < 3; ++d) {
     tangent_[d] = static_cast<float>(frame.tangent[d]);
     bitangent_[d] = static_cast<float>(frame.bitangent[d]);
@@ -116,12 +119,14 @@ HemisphereFormFactors::RowSampler::RowSampler(const HemisphereFormFactors& owner
   Rng rng(streamKey(owner.options_.seed, static_cast<uint64_t>(element)));
   key_ = (static_cast<uint64_t>(rng.next()) << 32) | rng.next();
   grid_ = static_cast<int>(std::sqrt(static_cast<double>(count_)));
-  if (grid_ >= 1 << 15) throw std::invalid_argument("a form-factor row must have fewer than 2^30 rays");
+  if (grid_ >= 1 << 15)
+    throw std::invalid_argument("a form-factor row must have fewer than 2^30 rays");
   inverseGrid_ = 1.0 / grid_;
   const int cells = grid_ * grid_;
   positionCell_.resize(cells);
   for (int y = 0, k = 0; y < grid_; ++y)
-    for (int x = 0; x < grid_; ++x) positionCell_[k++] = y << 16 | x;  // strata packed as fill() reads them
+    for (int x = 0; x < grid_; ++x)
+      positionCell_[k++] = y << 16 | x;  // strata packed as fill() reads them
   for (int k = cells - 1; k > 0; --k) std::swap(positionCell_[k], positionCell_[below(rng, k + 1)]);
 }
 
@@ -154,13 +159,20 @@ void HemisphereFormFactors::RowSampler::fill(int begin, RayBlock& b) const {
   const int* positionCell = positionCell_.data() + begin;
   for (int i = 0; i < stratified; ++i) {
     const int32_t d = b.directionCell[i], p = positionCell[i];
-    b.u[0][i] = (static_cast<float>(d & 0xffff) + static_cast<float>(2 * b.jitter[0][i] + 1) * kUnit) * inverseGrid;
-    b.u[1][i] = (static_cast<float>(d >> 16) + static_cast<float>(2 * b.jitter[1][i] + 1) * kUnit) * inverseGrid;
-    b.u[2][i] = (static_cast<float>(p & 0xffff) + static_cast<float>(2 * b.jitter[2][i] + 1) * kUnit) * inverseGrid;
-    b.u[3][i] = (static_cast<float>(p >> 16) + static_cast<float>(2 * b.jitter[3][i] + 1) * kUnit) * inverseGrid;
+    b.u[0][i] =
+        (static_cast<float>(d & 0xffff) + static_cast<float>(2 * b.jitter[0][i] + 1) * kUnit) *
+        inverseGrid;
+    b.u[1][i] = (static_cast<float>(d >> 16) + static_cast<float>(2 * b.jitter[1][i] + 1) * kUnit) *
+                inverseGrid;
+    b.u[2][i] =
+        (static_cast<float>(p & 0xffff) + static_cast<float>(2 * b.jitter[2][i] + 1) * kUnit) *
+        inverseGrid;
+    b.u[3][i] = (static_cast<float>(p >> 16) + static_cast<float>(2 * b.jitter[3][i] + 1) * kUnit) *
+                inverseGrid;
   }
   for (int c = 0; c < 4; ++c)
-    for (int i = stratified; i < n; ++i) b.u[c][i] = static_cast<float>(2 * b.jitter[c][i] + 1) * kUnit;
+    for (int i = stratified; i < n; ++i)
+      b.u[c][i] = static_cast<float>(2 * b.jitter[c][i] + 1) * kUnit;
   // Cosine-weighted directions (cosineWeightedDirection, in float: Embree takes floats), mapped
   // by the element's frame.
   const float t0 = tangent_[0], t1 = tangent_[1], t2 = tangent_[2];
@@ -196,7 +208,8 @@ void HemisphereFormFactors::frontHits(int element, const RayBlock& b, int* targe
     int front = -1;
     if (t >= 0 && t != element) {
       const float* n = &frontNormals_[3 * static_cast<size_t>(t)];
-      if (n[0] * b.direction[0][i] + n[1] * b.direction[1][i] + n[2] * b.direction[2][i] < 0) front = t;
+      if (n[0] * b.direction[0][i] + n[1] * b.direction[1][i] + n[2] * b.direction[2][i] < 0)
+        front = t;
     }
     target[i] = front;
   }
@@ -207,10 +220,11 @@ namespace {
 template <class Body>
 void forEachBlock(int count, Body&& body) {
   constexpr int kSize = 64;
-  tbb::parallel_for(tbb::blocked_range<int>(0, count, kSize), [&](const tbb::blocked_range<int>& range) {
-    for (int begin = range.begin(); begin < range.end(); begin += kSize)
-      body(begin, std::min(kSize, range.end() - begin));
-  });
+  tbb::parallel_for(tbb::blocked_range<int>(0, count, kSize),
+                    [&](const tbb::blocked_range<int>& range) {
+                      for (int begin = range.begin(); begin < range.end(); begin += kSize)
+                        body(begin, std::min(kSize, range.end() - begin));
+                    });
 }
 }  // namespace
 
@@ -263,14 +277,17 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
     const Eigen::Vector3d& centre = rays_.centre();
     for (int i = 0; i < count; ++i) {
       const int k = begin + i;
-      const Eigen::Vector3d origin = centre + Eigen::Vector3d(b.origin[0][i], b.origin[1][i], b.origin[2][i]);
+      const Eigen::Vector3d origin =
+          centre + Eigen::Vector3d(b.origin[0][i], b.origin[1][i], b.origin[2][i]);
       const Eigen::Vector3d direction =
           Eigen::Vector3d(b.direction[0][i], b.direction[1][i], b.direction[2][i]).normalized();
       // Fresnel choices draw from the ray's own stream: reproducible on any thread count.
-      Rng pathRng(streamKey(options_.seed, static_cast<uint64_t>(element), static_cast<uint64_t>(k) + 1));
+      Rng pathRng(
+          streamKey(options_.seed, static_cast<uint64_t>(element), static_cast<uint64_t>(k) + 1));
       int rays = 0;
-      const SpecularPathEnd end = traceThroughSpecular(rays_, normals_, options_.specular, origin, direction,
-                                                       element, pathRng, options_.maxSpecularDepth, &rays);
+      const SpecularPathEnd end =
+          traceThroughSpecular(rays_, normals_, options_.specular, origin, direction, element,
+                               pathRng, options_.maxSpecularDepth, &rays);
       firstHit[k] = -1;
       if (end.element >= 0 && end.element != element) {
         firstHit[k] = end.element;
@@ -319,7 +336,8 @@ FormFactorRow HemisphereFormFactors::assemble(const std::vector<int>& firstHit) 
   } else {
     scratch.bits.assign(escapedSlot / 64 + 1, 0);
     uint64_t* bits = scratch.bits.data();
-    for (size_t k = 0; k < m + (row.escaped > 0); ++k) bits[touched[k] >> 6] |= uint64_t(1) << (touched[k] & 63);
+    for (size_t k = 0; k < m + (row.escaped > 0); ++k)
+      bits[touched[k] >> 6] |= uint64_t(1) << (touched[k] & 63);
     for (size_t w = 0; j < m; ++w)
       for (uint64_t word = bits[w]; word != 0 && j < m; word &= word - 1)
         emit(static_cast<uint32_t>(64 * w + __builtin_ctzll(word)));

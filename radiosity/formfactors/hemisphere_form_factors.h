@@ -53,8 +53,9 @@ class HemisphereFormFactors {
   // The first segments of the rays computeRow(element) casts, with what each one hit first.
   std::vector<RowRay> traceRow(int element) const;
   int raysForRow(int element) const {
-    return options_.rayMultiplier.empty() ? options_.raysPerElement
-                                          : options_.raysPerElement * options_.rayMultiplier[element];
+    return options_.rayMultiplier.empty()
+               ? options_.raysPerElement
+               : options_.raysPerElement * options_.rayMultiplier[element];
   }
   const PatchMesh& mesh() const { return mesh_; }
   // Rays cast beyond the first one of each sample: the continuations through mirrors and glass.
@@ -88,7 +89,8 @@ class HemisphereFormFactors {
   void frontHits(int element, const RayBlock& block, int* target) const;
   // Rows from each ray's first hit (-1: escaped): plain counts, or with each path's tint.
   FormFactorRow assemble(const std::vector<int>& firstHit) const;
-  FormFactorRow assembleTinted(const std::vector<int>& firstHit, const std::vector<Rgb>& weight) const;
+  FormFactorRow assembleTinted(const std::vector<int>& firstHit,
+                               const std::vector<Rgb>& weight) const;
 
   const PatchMesh& mesh_;
   const RayCaster& rays_;

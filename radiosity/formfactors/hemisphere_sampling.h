@@ -25,8 +25,9 @@ inline void turnCosSin(float u, float& c, float& s) {
   const float a = (y - static_cast<float>(q)) * 1.57079632679489662f;
   const float z = a * a;
   const float sa = a + a * z * (-1.6666654611e-1f + z * (8.3321608736e-3f + z * -1.9515295891e-4f));
-  const float ca = 1.0f - 0.5f * z + z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f +
-                                                                            z * 2.443315711809948e-5f));
+  const float ca =
+      1.0f - 0.5f * z +
+      z * z * (4.166664568298827e-2f + z * (-1.388731625493765e-3f + z * 2.443315711809948e-5f));
   const bool odd = (q & 1) != 0;
   const float cq = odd ? sa : ca, sq = odd ? ca : sa;
   c = ((q + 1) & 2) ? -cq : cq;

@@ -8,7 +8,8 @@ namespace rad {
 // Exact differential-area-to-polygon form factor (Lambert; Nusselt's analogue): the fraction of
 // the energy leaving a point p with unit normal n that reaches the polygon, ignoring occlusion:
 //
-//   F = (1/2π) Σ_i β_i (n · Γ_i),  Γ_i = unit(R_i × R_{i+1}),  β_i = angle(R_i, R_{i+1}),  R_i = v_i − p
+//   F = (1/2π) Σ_i β_i (n · Γ_i),  Γ_i = unit(R_i × R_{i+1}),  β_i = angle(R_i, R_{i+1}),  R_i =
+//   v_i − p
 //
 // The polygon (planar, any winding) is first clipped to the half-space above p's tangent plane,
 // since the formula holds only for what p can see. A polygon whose front (counter-clockwise side)

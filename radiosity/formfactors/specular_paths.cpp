@@ -4,7 +4,8 @@
 
 namespace rad {
 
-SpecularPathEnd traceThroughSpecular(const RayCaster& rays, const std::vector<Eigen::Vector3d>& normals,
+SpecularPathEnd traceThroughSpecular(const RayCaster& rays,
+                                     const std::vector<Eigen::Vector3d>& normals,
                                      const std::vector<SpecularSurface>& surfaces,
                                      Eigen::Vector3d origin, Eigen::Vector3d direction, int from,
                                      Rng& rng, int maxDepth, int* raysCast) {

@@ -32,10 +32,10 @@ struct SpecularPathEnd {
 // reflect (one-sided, like every surface); glass reflects or refracts with probability given by
 // the Fresnel reflectance (unpolarised, exact dielectric formula), so the weight carries only the
 // colour filters and the estimate stays unbiased. `rng` supplies the Fresnel choices.
-SpecularPathEnd traceThroughSpecular(const RayCaster& rays, const std::vector<Eigen::Vector3d>& normals,
+SpecularPathEnd traceThroughSpecular(const RayCaster& rays,
+                                     const std::vector<Eigen::Vector3d>& normals,
                                      const std::vector<SpecularSurface>& surfaces,
                                      Eigen::Vector3d origin, Eigen::Vector3d direction, int from,
                                      Rng& rng, int maxDepth, int* raysCast);
-
 
 }  // namespace rad

@@ -15,10 +15,10 @@ namespace rad {
 //   _RADIANCE   float RGB, the linear outgoing radiance L itself (W·m⁻²·sr⁻¹, unclamped);
 //   TEXCOORD_0 and TEXCOORD_1, the lightmap UVs (one accessor), when `lightmapPng` is given.
 // With a lightmap, every material shows it as emissiveTexture (texCoord 1, emissiveFactor 1) over
-// a black, rough, non-metallic base: core glTF that Blender, three.js, Babylon and game engines show as
-// the baked colours whatever lights a viewer adds, and COLOR_0, multiplying a black base, adds
-// nothing. Without a lightmap the materials are KHR_materials_unlit with a white base, so COLOR_0
-// is what shows. The exposure is in asset.extras.radiosity. Open `out` in binary mode.
+// a black, rough, non-metallic base: core glTF that Blender, three.js, Babylon and game engines
+// show as the baked colours whatever lights a viewer adds, and COLOR_0, multiplying a black base,
+// adds nothing. Without a lightmap the materials are KHR_materials_unlit with a white base, so
+// COLOR_0 is what shows. The exposure is in asset.extras.radiosity. Open `out` in binary mode.
 // Throws RuntimeFailure if tinygltf fails to serialise.
 void writeBakedGlb(std::ostream& out, const BakedMesh& mesh,
                    const std::vector<std::uint8_t>* lightmapPng, const ToneMap& toneMap);

@@ -26,7 +26,8 @@ void writeExr(const std::string& path, const ImageRgb& image) {
   std::vector<float> channels[3];
   for (int c = 0; c < 3; ++c) {
     channels[c].resize(static_cast<size_t>(w) * h);
-    for (size_t i = 0; i < channels[c].size(); ++i) channels[c][i] = static_cast<float>(image.pixels[i][c]);
+    for (size_t i = 0; i < channels[c].size(); ++i)
+      channels[c][i] = static_cast<float>(image.pixels[i][c]);
   }
   AtomicPath file(path);
   try {
@@ -61,8 +62,10 @@ ImageRgb readExr(const std::string& path) {
     Imf::FrameBuffer frame;
     for (int c = 0; c < 3; ++c) {
       channels[c].resize(static_cast<size_t>(w) * h);
-      char* base = reinterpret_cast<char*>(channels[c].data()) -
-                   (static_cast<ptrdiff_t>(window.min.x) + static_cast<ptrdiff_t>(window.min.y) * w) * sizeof(float);
+      char* base =
+          reinterpret_cast<char*>(channels[c].data()) -
+          (static_cast<ptrdiff_t>(window.min.x) + static_cast<ptrdiff_t>(window.min.y) * w) *
+              sizeof(float);
       frame.insert(names[c], Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * w));
     }
     in.setFrameBuffer(frame);
@@ -101,7 +104,8 @@ std::vector<std::uint8_t> encodePng(const ImageRgb& radiance, const ToneMap& ton
 void writePng(const std::string& path, const ImageRgb& radiance, const ToneMap& toneMap) {
   const std::vector<std::uint8_t> png = encodePng(radiance, toneMap);
   AtomicFile file(path, /*binary=*/true);
-  file.stream().write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  file.stream().write(reinterpret_cast<const char*>(png.data()),
+                      static_cast<std::streamsize>(png.size()));
   file.commit();
 }
 

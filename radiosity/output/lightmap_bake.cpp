@@ -1,6 +1,6 @@
-#include <tbb/parallel_for.h>
-
 #include "radiosity/output/lightmap_bake.h"
+
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -134,11 +134,14 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
   progress.finish();
   if (evaluate) {
     Progress gathering("lightmap gather", map.chart.size(), "texels");
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, map.chart.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i)
-        if (map.element[i] >= 0) map.radiance.pixels[i] = evaluate(map.element[i], texelBarycentric[i], i);
-      gathering.advance(r.size());
-    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, map.chart.size(), 64),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t i = r.begin(); i != r.end(); ++i)
+                          if (map.element[i] >= 0)
+                            map.radiance.pixels[i] =
+                                evaluate(map.element[i], texelBarycentric[i], i);
+                        gathering.advance(r.size());
+                      });
     gathering.finish();
   }
 
@@ -154,8 +157,10 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
         const size_t j = map.index(nx, ny);
         if (map.element[j] < 0) continue;
         const int c = map.chart[j];
-        if (first < 0 || c == first) first = c;
-        else if (second < 0 || c < second) second = c;
+        if (first < 0 || c == first)
+          first = c;
+        else if (second < 0 || c < second)
+          second = c;
       }
   };
   for (int y = 0; y < height; ++y)

@@ -1,8 +1,8 @@
 #include "radiosity/output/lightmap_baked_mesh.h"
 
 #include <map>
-#include <tuple>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace rad {

@@ -116,8 +116,8 @@ void Bdpt::walk(std::vector<Vertex>& path, Eigen::Vector3d origin, Eigen::Vector
 }
 
 // Veach's weight of strategy (s, t) for the path y0…y_{s−1} z_{t−1}…z0: p_s^β / Σ p_i^β over the
-// strategies used (t ≥ 2 or t ≥ 1, connecting edge without a specular end), computed by walking the ratios
-// p_{i±1}/p_i = pdf of a vertex from the other side / from its own side. `lightEndRev` and
+// strategies used (t ≥ 2 or t ≥ 1, connecting edge without a specular end), computed by walking the
+// ratios p_{i±1}/p_i = pdf of a vertex from the other side / from its own side. `lightEndRev` and
 // `eyeEndRev` are the reverse densities of y_{s−1} and z_{t−1} for this connection.
 double Bdpt::misWeight(const std::vector<Vertex>& light, const std::vector<Vertex>& eye, int s,
                        int t, double lightEndRev, double eyeEndRev, bool lightTracing) const {
@@ -140,8 +140,8 @@ double Bdpt::misWeight(const std::vector<Vertex>& light, const std::vector<Verte
   return 1 / (1 + sum);
 }
 
-Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                Sampler& sampler, RayCounts& counts, const PathBinning* binning, Rgb* binned,
+Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
+                RayCounts& counts, const PathBinning* binning, Rgb* binned,
                 SplatImage* splats) const {
   // The sub-paths draw from the pixel's free stream: their dimensions vary in number, and the
   // connections, not stratification, are what lowers bdpt's variance.
@@ -209,8 +209,8 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
 
     // s = 0: the eye sub-path reached an emitter's front.
     if (mz.isEmitter()) {
-      const double w = misWeight(light, eye, 0, t, 0, scene_.emitters().pdfArea(z.hit.element),
-                                 lightTracing);
+      const double w =
+          misWeight(light, eye, 0, t, 0, scene_.emitters().pdfArea(z.hit.element), lightTracing);
       add(z.beta * mz.emission * w, 0, t);
     }
     if (mz.diffuse.maxComponent() == 0) continue;

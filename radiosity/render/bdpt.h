@@ -37,12 +37,12 @@ class Bdpt : public PathIntegrator {
   std::string name() const override;
 
   struct Vertex {
-    SurfaceHit hit;        // for the camera vertex only the position is set
-    Rgb beta;              // sub-path throughput up to (not including) this vertex's scattering
-    double pdfFwd = 0;     // area density of this vertex from its own sub-path (0: after a delta)
-    double pdfRev = 0;     // area density of this vertex from the other direction (0: before a delta)
+    SurfaceHit hit;     // for the camera vertex only the position is set
+    Rgb beta;           // sub-path throughput up to (not including) this vertex's scattering
+    double pdfFwd = 0;  // area density of this vertex from its own sub-path (0: after a delta)
+    double pdfRev = 0;  // area density of this vertex from the other direction (0: before a delta)
     bool specular = false;
-    char label = 'D';      // L (emitter point y0), D, S or E (camera)
+    char label = 'D';  // L (emitter point y0), D, S or E (camera)
   };
 
  private:

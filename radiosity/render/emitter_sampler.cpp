@@ -32,7 +32,8 @@ EmitterSample EmitterSampler::sample(double u, double v) const {
   const size_t k = std::min<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin(),
                                     elements_.size() - 1);
   const double low = k > 0 ? cdf_[k - 1] : 0.0, width = cdf_[k] - low;
-  const double rescaled = width > 0 ? std::clamp((u - low) / width, 0.0, std::nextafter(1.0, 0.0)) : 0.5;
+  const double rescaled =
+      width > 0 ? std::clamp((u - low) / width, 0.0, std::nextafter(1.0, 0.0)) : 0.5;
   return pointOn(k, rescaled, v);
 }
 

@@ -1,10 +1,10 @@
 #include "radiosity/render/final_gather.h"
 
-#include <cmath>
-#include <string>
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <string>
 
 #include "radiosity/core/rng.h"
 #include "radiosity/render/scattering.h"
@@ -36,7 +36,8 @@ FinalGather::FinalGather(const RenderScene& scene, const std::vector<Rgb>& radio
   // share, the point's own share makes up for it on average.
   ElementLight direct = meanLightSample();
   indirect_.resize(n);
-  for (int e = 0; e < n; ++e) indirect_[e] = reflected_[e] - scene.material(e).diffuse * direct.mean[e];
+  for (int e = 0; e < n; ++e)
+    indirect_[e] = reflected_[e] - scene.material(e).diffuse * direct.mean[e];
   uniformLight_ = std::move(direct.uniform);
 }
 
@@ -178,9 +179,9 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
       // least like the light at this very point: gather once more from the point, one shadow
       // ray and one cosine ray (read from the solution), weighed by MIS as at the eye hit.
       const Point2 light{rng.uniform(), rng.uniform()}, bounce{rng.uniform(), rng.uniform()};
-      const Rgb incoming =
-          lightSample(hit, light, counts) +
-          secondaryRadiance(hit, cosineDirection(hit.normal, bounce.x, bounce.y), rng, counts, false);
+      const Rgb incoming = lightSample(hit, light, counts) +
+                           secondaryRadiance(hit, cosineDirection(hit.normal, bounce.x, bounce.y),
+                                             rng, counts, false);
       return weight * (value + rho * incoming);
     }
     // Otherwise the solution's reflected part, (B − E)/π of the element, with its mean shadow-ray

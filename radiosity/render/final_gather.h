@@ -43,7 +43,8 @@ class FinalGather : public Integrator {
   // Outgoing radiance at a point of a diffuse element, seen from its front (for baking
   // lightmaps by per-texel final gather): Ke + rho·(direct + gathered light). Mirrors and glass
   // hold no radiance of their own here: 0.
-  Rgb outgoingRadiance(int element, const Eigen::Vector3d& position, Rng& rng, RayCounts& counts) const;
+  Rgb outgoingRadiance(int element, const Eigen::Vector3d& position, Rng& rng,
+                       RayCounts& counts) const;
 
  private:
   Rgb interpolatedRadiance(const SurfaceHit& hit) const;  // B/π at the hit, from vertex values
@@ -56,7 +57,9 @@ class FinalGather : public Integrator {
   // `gathersPerLight`: cosine rays per shadow ray in the MIS pair (power heuristic with counts).
   Rgb lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts,
                   double gathersPerLight = 1.0) const;
-  int lightRays() const { return options_.lightRays > 0 ? options_.lightRays : options_.gatherRays; }
+  int lightRays() const {
+    return options_.lightRays > 0 ? options_.lightRays : options_.gatherRays;
+  }
   // Per element: the mean of lightSample over its area (stratified points), and whether every
   // one of those points saw the emitters alike (all lit, or none: no shadow edge, no emitter
   // plane crossing the element).

@@ -10,11 +10,16 @@ namespace {
 
 int symbolIndex(char c) {
   switch (c) {
-    case 'L': return 0;
-    case 'D': return 1;
-    case 'S': return 2;
-    case 'E': return 3;
-    default: return -1;
+    case 'L':
+      return 0;
+    case 'D':
+      return 1;
+    case 'S':
+      return 2;
+    case 'E':
+      return 3;
+    default:
+      return -1;
   }
 }
 
@@ -45,13 +50,16 @@ class Parser {
     skipSpaces();
     if (pos_ == text_.size()) fail("the expression is empty");
     const Fragment f = alternation();
-    if (pos_ < text_.size()) fail(text_[pos_] == ')' ? "unmatched ')'" : "unexpected '" + std::string(1, text_[pos_]) + "'");
+    if (pos_ < text_.size())
+      fail(text_[pos_] == ')' ? "unmatched ')'"
+                              : "unexpected '" + std::string(1, text_[pos_]) + "'");
     return f;
   }
 
  private:
   [[noreturn]] void fail(const std::string& what) const {
-    throw InputError("--paths '" + text_ + "': " + what + " at position " + std::to_string(pos_ + 1) +
+    throw InputError("--paths '" + text_ + "': " + what + " at position " +
+                     std::to_string(pos_ + 1) +
                      " (expected a Heckbert expression over L, D, S, E with * + ? | and "
                      "parentheses, e.g. LS+DE)");
   }
@@ -99,7 +107,7 @@ class Parser {
       const int s = nfa_.add(), a = nfa_.add();
       nfa_.states[s].epsilon.push_back(f.start);
       nfa_.states[f.accept].epsilon.push_back(a);
-      if (op != '+') nfa_.states[s].epsilon.push_back(a);        // zero times
+      if (op != '+') nfa_.states[s].epsilon.push_back(a);               // zero times
       if (op != '?') nfa_.states[f.accept].epsilon.push_back(f.start);  // again
       f = {s, a};
     }
@@ -118,7 +126,8 @@ class Parser {
     }
     const int symbol = symbolIndex(c);
     if (symbol < 0) {
-      if (c == '*' || c == '+' || c == '?') fail("'" + std::string(1, c) + "' with nothing to repeat");
+      if (c == '*' || c == '+' || c == '?')
+        fail("'" + std::string(1, c) + "' with nothing to repeat");
       fail("unknown symbol '" + std::string(1, c) + "'");
     }
     ++pos_;

@@ -27,14 +27,15 @@ class PathIntegrator : public Integrator {
   // adds each one to binned[binning->binOf(label)] (binned has binning->binCount() entries).
   // With `splats`, an integrator may also add contributions to other pixels there (in units
   // the renderer divides by the samples per pixel); without, it must not use such strategies.
-  virtual Rgb trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
-                    RayCounts& counts, const PathBinning* binning, Rgb* binned,
+  virtual Rgb trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                    Sampler& sampler, RayCounts& counts, const PathBinning* binning, Rgb* binned,
                     SplatImage* splats) const = 0;
 };
 
 // Appends the eye-side vertex labels (collected eye to light, e.g. "DS" for the first hit D then
 // S) reversed, between the emitter's L and the eye's E: the light-to-eye label ("LSDE").
-inline void lightToEyeLabel(std::string& label, std::string_view lightSide, std::string_view eyeSide) {
+inline void lightToEyeLabel(std::string& label, std::string_view lightSide,
+                            std::string_view eyeSide) {
   label.assign("L");
   label.append(lightSide);
   label.append(eyeSide.rbegin(), eyeSide.rend());

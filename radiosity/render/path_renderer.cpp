@@ -77,7 +77,8 @@ PathRenderOutput renderPathImage(const Camera& camera, const PathIntegrator& int
           }
         }
         storePixelMean(out.full, x, y, sum, sumSquares, n);
-        for (int b = 0; b < bins; ++b) storePixelMean(out.bins[b], x, y, binSum[b], binSumSquares[b], n);
+        for (int b = 0; b < bins; ++b)
+          storePixelMean(out.bins[b], x, y, binSum[b], binSumSquares[b], n);
       }
       if (progress) progress->advance();
     }

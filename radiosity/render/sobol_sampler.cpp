@@ -68,7 +68,8 @@ Point2 SobolSampler::point(uint32_t index, uint64_t key) {
   // reverses it back.
   const uint32_t i = reverseBits(laineKarras(reverseBits(index), static_cast<uint32_t>(a)));
   const auto& t = sobolSecondDimensionReversed();
-  const uint32_t yReversed = t[0][i & 0xffu] ^ t[1][(i >> 8) & 0xffu] ^ t[2][(i >> 16) & 0xffu] ^ t[3][i >> 24];
+  const uint32_t yReversed =
+      t[0][i & 0xffu] ^ t[1][(i >> 8) & 0xffu] ^ t[2][(i >> 16) & 0xffu] ^ t[3][i >> 24];
   return {reverseBits(laineKarras(i, static_cast<uint32_t>(a >> 32))) * kTwoToMinus32,
           reverseBits(laineKarras(yReversed, static_cast<uint32_t>(b))) * kTwoToMinus32};
 }

@@ -14,8 +14,10 @@ struct SplatImage {
   std::vector<ImageRgb> binSum, binSumSquares;
 
   SplatImage(int width, int height, int bins)
-      : sum(width, height), sumSquares(width, height),
-        binSum(bins, ImageRgb(width, height)), binSumSquares(bins, ImageRgb(width, height)) {}
+      : sum(width, height),
+        sumSquares(width, height),
+        binSum(bins, ImageRgb(width, height)),
+        binSumSquares(bins, ImageRgb(width, height)) {}
   // `bin` -1: the value belongs to no bin (it still counts in the full image).
   void add(int x, int y, const Rgb& value, int bin) {
     sum.at(x, y) += value;

@@ -16,11 +16,11 @@ enum class SurfaceKind {
 
 struct Material {
   std::string name;
-  Rgb diffuse;        // Kd: Lambertian reflectance rho, each channel in [0, 1)
-  Rgb emission;       // Ke: emitted radiance L_e in W m^-2 sr^-1 (front face only)
-  Rgb specular;       // Ks: mirror reflectance
-  Rgb transmittance;  // Tf: dielectric transmittance filter
-  double ior = 1.0;   // Ni
+  Rgb diffuse;             // Kd: Lambertian reflectance rho, each channel in [0, 1)
+  Rgb emission;            // Ke: emitted radiance L_e in W m^-2 sr^-1 (front face only)
+  Rgb specular;            // Ks: mirror reflectance
+  Rgb transmittance;       // Tf: dielectric transmittance filter
+  double ior = 1.0;        // Ni
   double shininess = 0.0;  // Ns
   int illum = 2;
   SurfaceKind kind = SurfaceKind::Diffuse;

@@ -37,8 +37,9 @@ MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
         // tinyobjloader ends a name at a NUL byte; control characters are never a real name.
         for (unsigned char ch : tokens[1])
           if (ch < 0x20 || ch == 0x7f)
-            throw InputError(file, line, "material name contains a control character (byte " +
-                                             std::to_string(ch) + ")");
+            throw InputError(
+                file, line,
+                "material name contains a control character (byte " + std::to_string(ch) + ")");
         result.materials.push_back({tokens[1], file, line});
       } else if (result.materials.empty()) {
         // tinyobjloader would silently give these values to an unnamed material.

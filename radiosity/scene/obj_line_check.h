@@ -29,8 +29,8 @@ struct ObjLineCheck {
 // Throws InputError "file:line: message" for: a file that cannot be opened (an MTL one at the
 // `mtllib` line), malformed or non-finite numbers and too few components on `v` lines, face (and
 // line/point) indices that are not integers, zero or out of range, faces with fewer than 3
-// vertices, `vt` lines without 1 to 3 finite numbers, `usemtl` of a material no library loaded so far defines, and any MTL error that
-// checkMtlText() reports.
+// vertices, `vt` lines without 1 to 3 finite numbers, `usemtl` of a material no library loaded so
+// far defines, and any MTL error that checkMtlText() reports.
 ObjLineCheck checkObjFile(const std::string& objPath);
 
 }  // namespace rad

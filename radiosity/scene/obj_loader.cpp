@@ -157,7 +157,8 @@ std::vector<ScenePolygon> readPolygons(const std::vector<tinyobj::shape_t>& shap
       // A face has UVs when every corner names a `vt` (OBJ allows "f 1/1 2//1 3": such a face
       // has none, and a bake into the scene's UVs reports it).
       bool allCorners = true;
-      for (int v = 0; v < size; ++v) allCorners &= shape.mesh.indices[offset + v].texcoord_index >= 0;
+      for (int v = 0; v < size; ++v)
+        allCorners &= shape.mesh.indices[offset + v].texcoord_index >= 0;
       if (allCorners) {
         for (int v = 0; v < size; ++v) {
           const int t = shape.mesh.indices[offset + v].texcoord_index;
@@ -218,9 +219,8 @@ Scene loadObjScene(const std::string& objPath) {
   const int defaultId = static_cast<int>(scene.materials.size());
   std::vector<int> degenerateLines, defaultLines;
   const double diagonal2 = squaredDiagonal(scene.positions);
-  for (ScenePolygon& polygon :
-       readPolygons(reader.GetShapes(), reader.GetAttrib().texcoords, check,
-                    static_cast<int>(scene.materials.size()))) {
+  for (ScenePolygon& polygon : readPolygons(reader.GetShapes(), reader.GetAttrib().texcoords, check,
+                                            static_cast<int>(scene.materials.size()))) {
     for (int v : polygon.vertices) {
       if (v < 0 || v >= static_cast<int>(scene.positions.size())) {
         throw RuntimeFailure("tinyobjloader gave the face at line " +
@@ -255,9 +255,9 @@ Scene loadObjScene(const std::string& objPath) {
           std::to_string(scene.polygons.size()) + " polygons, " +
           std::to_string(scene.materials.size()) + " materials, " +
           std::to_string(scene.emitterCount()) + " emitting polygons" +
-          (scene.polygonsWithUvs() ? ", " + std::to_string(scene.polygonsWithUvs()) +
-                                         " with texture coordinates"
-                                   : std::string()));
+          (scene.polygonsWithUvs()
+               ? ", " + std::to_string(scene.polygonsWithUvs()) + " with texture coordinates"
+               : std::string()));
   return scene;
 }
 

@@ -10,12 +10,13 @@ namespace rad {
 
 // One input polygon (an OBJ face). It becomes one patch of the PatchMesh.
 struct ScenePolygon {
-  std::vector<int> vertices;  // indices into Scene::positions, counter-clockwise seen from the front
-  int material = 0;           // index into Scene::materials
-  int sourceLine = 0;         // line of the `f` statement in the OBJ file
+  std::vector<int>
+      vertices;        // indices into Scene::positions, counter-clockwise seen from the front
+  int material = 0;    // index into Scene::materials
+  int sourceLine = 0;  // line of the `f` statement in the OBJ file
   // The `vt` of each corner (u, v with v up, as OBJ writes it), or empty when some corner has none.
   std::vector<Eigen::Vector2d> uvs;
-  std::string object;         // name of the OBJ `o`/`g` group the face belongs to ("" if none)
+  std::string object;  // name of the OBJ `o`/`g` group the face belongs to ("" if none)
 };
 
 // A validated scene: every polygon has >= 3 distinct, in-range vertices and non-zero area,
@@ -26,11 +27,11 @@ struct Scene {
   std::vector<ScenePolygon> polygons;
   std::vector<Material> materials;
 
-  int skippedDegenerateFaces = 0;  // zero-area or repeated-vertex faces, skipped with a warning
+  int skippedDegenerateFaces = 0;    // zero-area or repeated-vertex faces, skipped with a warning
   bool usedDefaultMaterial = false;  // some faces had no `usemtl`
 
-  int emitterCount() const;   // polygons whose material emits
-  bool hasSpecular() const;   // any polygon with a mirror or dielectric material
+  int emitterCount() const;     // polygons whose material emits
+  bool hasSpecular() const;     // any polygon with a mirror or dielectric material
   int polygonsWithUvs() const;  // polygons whose corners all have texture coordinates
 };
 

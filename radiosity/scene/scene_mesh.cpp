@@ -5,8 +5,8 @@ namespace rad {
 PatchMesh buildPatchMesh(const Scene& scene) {
   // The mesh carries UVs only when every polygon has them (the lightmap's use of scene UVs
   // requires that, and reports the faces without).
-  const bool uvs = !scene.polygons.empty() &&
-                   scene.polygonsWithUvs() == static_cast<int>(scene.polygons.size());
+  const bool uvs =
+      !scene.polygons.empty() && scene.polygonsWithUvs() == static_cast<int>(scene.polygons.size());
   std::vector<PatchPolygon> polygons;
   polygons.reserve(scene.polygons.size());
   for (const ScenePolygon& p : scene.polygons)

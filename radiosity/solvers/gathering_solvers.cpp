@@ -12,7 +12,8 @@ Rgb gatherRow(const SparseRows& f, int i, const std::vector<Rgb>& b) {
 }
 }  // namespace
 
-SparseRows gatherMatrix(const RadiosityProblem& problem, FormFactorCache& cache, Progress* progress) {
+SparseRows gatherMatrix(const RadiosityProblem& problem, FormFactorCache& cache,
+                        Progress* progress) {
   cache.computeRows(problem.reflecting(), progress);
   return cache.matrix();
 }
@@ -48,8 +49,10 @@ void GaussSeidelSolver::step() {
     Rgb others;
     double selfFactor = 0;
     for (SparseRows::InnerIterator it(f_, i); it; ++it) {
-      if (it.col() == i) selfFactor = it.value();
-      else others += it.value() * solution_[it.col()];
+      if (it.col() == i)
+        selfFactor = it.value();
+      else
+        others += it.value() * solution_[it.col()];
     }
     const Rgb& rho = problem_.reflectance[i];
     const Rgb numerator = problem_.emission[i] + rho * others;
@@ -67,7 +70,8 @@ std::vector<Rgb> solveDirect(const RadiosityProblem& problem, const SparseRows& 
     for (int i = 0; i < n; ++i) {
       entries.emplace_back(i, i, 1.0);
       for (SparseRows::InnerIterator it(f, i); it; ++it)
-        entries.emplace_back(i, static_cast<int>(it.col()), -problem.reflectance[i][c] * it.value());
+        entries.emplace_back(i, static_cast<int>(it.col()),
+                             -problem.reflectance[i][c] * it.value());
     }
     Eigen::SparseMatrix<double> a(n, n);
     a.setFromTriplets(entries.begin(), entries.end());

@@ -92,7 +92,8 @@ class MaxPowerTree {
   }
 
   size_t n_ = 0, leaves_ = 1;
-  std::vector<Node> nodes_;  // implicit binary tree: root 1, children 2k and 2k+1, leaves from leaves_
+  std::vector<Node>
+      nodes_;  // implicit binary tree: root 1, children 2k and 2k+1, leaves from leaves_
   std::vector<size_t> pending_;  // changed by setLater(), not yet updated
 };
 

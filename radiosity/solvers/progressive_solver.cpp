@@ -9,8 +9,12 @@
 namespace rad {
 
 ProgressiveSolver::ProgressiveSolver(const RadiosityProblem& problem, ShotRows& shots)
-    : problem_(problem), shots_(shots), solution_(problem.emission), unshot_(shots.shooterCount()),
-      shot_(shots.shooterCount()), received_(shots.shooterCount()),
+    : problem_(problem),
+      shots_(shots),
+      solution_(problem.emission),
+      unshot_(shots.shooterCount()),
+      shot_(shots.shooterCount()),
+      received_(shots.shooterCount()),
       emittedPower_(problem.emittedPower()) {
   pointSolution_.resize(problem.size());
   for (int i = 0; i < problem.size(); ++i) pointSolution_[i].fill(problem.emission[i]);
@@ -54,7 +58,8 @@ void ProgressiveSolver::step() {
       for (Rgb& b : pointSolution_[j]) b += reflected / problem_.area[j];
     } else {
       const Rgb perFraction = problem_.reflectance[j] * power / problem_.area[j];
-      for (int p = 0; p < 3; ++p) pointSolution_[j][p] += perFraction * static_cast<double>(row.points[k][p]);
+      for (int p = 0; p < 3; ++p)
+        pointSolution_[j][p] += perFraction * static_cast<double>(row.points[k][p]);
     }
     const int receiver = shots_.shooterOf(j);
     unshot_[receiver] += reflected;
@@ -87,27 +92,29 @@ std::vector<Rgb> ProgressiveSolver::withAmbient() const {
   return out;
 }
 
-void ProgressiveSolver::elementsChanged(const std::vector<int>& changed,
-                                        const std::function<std::array<double, 3>(int, int)>& elementToShooter) {
+void ProgressiveSolver::elementsChanged(
+    const std::vector<int>& changed,
+    const std::function<std::array<double, 3>(int, int)>& elementToShooter) {
   solution_.resize(problem_.size());
   pointSolution_.resize(problem_.size());
   std::vector<int> shotShooters;
   for (int s = 0; s < static_cast<int>(shot_.size()); ++s)
     if (shot_[s].maxComponent() > 0) shotShooters.push_back(s);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, changed.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t k = r.begin(); k != r.end(); ++k) {
-      const int e = changed[k];
-      std::array<Rgb, 3> gathered;
-      for (int s : shotShooters) {
-        const std::array<double, 3> f = elementToShooter(e, s);
-        for (int p = 0; p < 3; ++p)
-          if (f[p] > 0) gathered[p] += f[p] * shot_[s];
-      }
-      for (int p = 0; p < 3; ++p)
-        pointSolution_[e][p] = problem_.emission[e] + problem_.reflectance[e] * gathered[p];
-      solution_[e] = (pointSolution_[e][0] + pointSolution_[e][1] + pointSolution_[e][2]) / 3.0;
-    }
-  });
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, changed.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) {
+          const int e = changed[k];
+          std::array<Rgb, 3> gathered;
+          for (int s : shotShooters) {
+            const std::array<double, 3> f = elementToShooter(e, s);
+            for (int p = 0; p < 3; ++p)
+              if (f[p] > 0) gathered[p] += f[p] * shot_[s];
+          }
+          for (int p = 0; p < 3; ++p)
+            pointSolution_[e][p] = problem_.emission[e] + problem_.reflectance[e] * gathered[p];
+          solution_[e] = (pointSolution_[e][0] + pointSolution_[e][1] + pointSolution_[e][2]) / 3.0;
+        }
+      });
   // Keep each shooter's books: its unshot power must match what its elements now reflect.
   std::vector<Rgb> reflectedNow(shot_.size());
   for (int e = 0; e < problem_.size(); ++e)

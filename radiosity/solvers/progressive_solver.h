@@ -48,8 +48,9 @@ class ProgressiveSolver : public Solver {
   // shot in total: exactly what it would hold had it existed from the start. Unshot power stays
   // with the shooters, so shooting goes on where it was.
   // elementToShooter gives the form factor at each of the element's 3 receiver points.
-  void elementsChanged(const std::vector<int>& changed,
-                       const std::function<std::array<double, 3>(int element, int shooter)>& elementToShooter);
+  void elementsChanged(
+      const std::vector<int>& changed,
+      const std::function<std::array<double, 3>(int element, int shooter)>& elementToShooter);
   void setName(std::string name) { name_ = std::move(name); }
 
  private:
@@ -63,8 +64,8 @@ class ProgressiveSolver : public Solver {
   std::string name_ = "progressive";
   std::vector<Rgb> solution_;
   std::vector<std::array<Rgb, 3>> pointSolution_;
-  std::vector<Rgb> unshot_;  // per shooter, W
-  std::vector<Rgb> shot_;    // per shooter: radiosity shot so far, W/m²
+  std::vector<Rgb> unshot_;    // per shooter, W
+  std::vector<Rgb> shot_;      // per shooter: radiosity shot so far, W/m²
   std::vector<Rgb> received_;  // per shooter: reflected power its elements received so far, W
   // Largest unshot power and the total in O(log shooters) per change, instead of a scan of all
   // shooters per shot (which made shooting O(n²)); same shooter order as the scan.
@@ -80,7 +81,8 @@ class ProgressiveSolver : public Solver {
 // fraction A_j F_ji / A_i read from column i of the gathering matrix (all rows computed first).
 class GatheringColumns : public ShotRows {
  public:
-  GatheringColumns(const RadiosityProblem& problem, const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows);
+  GatheringColumns(const RadiosityProblem& problem,
+                   const Eigen::SparseMatrix<double, Eigen::RowMajor>& rows);
   int shooterCount() const override { return static_cast<int>(area_.size()); }
   int shooterOf(int element) const override { return element; }
   double shooterArea(int shooter) const override { return area_[shooter]; }

@@ -21,7 +21,8 @@ std::vector<bool> RadiosityProblem::reflecting() const {
 double relativeToEmission(const RadiosityProblem& problem, const std::vector<Rgb>& values) {
   CompensatedSum sum;
   for (int i = 0; i < problem.size(); ++i)
-    sum += problem.area[i] * (std::fabs(values[i].r) + std::fabs(values[i].g) + std::fabs(values[i].b));
+    sum += problem.area[i] *
+           (std::fabs(values[i].r) + std::fabs(values[i].g) + std::fabs(values[i].b));
   const double emitted = problem.emittedPower();
   return emitted > 0 ? sum.value() / emitted : 0.0;
 }

@@ -109,7 +109,8 @@ void fillRay(RTCRay& ray, const Eigen::Vector3d& o, const Eigen::Vector3d& d, do
   ray.dir_y = static_cast<float>(d.y());
   ray.dir_z = static_cast<float>(d.z());
   ray.tnear = 0.0f;
-  ray.tfar = maxDistance < 3e38 ? static_cast<float>(maxDistance) : std::numeric_limits<float>::infinity();
+  ray.tfar =
+      maxDistance < 3e38 ? static_cast<float>(maxDistance) : std::numeric_limits<float>::infinity();
   ray.time = static_cast<float>(time);
   ray.mask = 0xFFFFFFFFu;
   ray.id = 0;
@@ -137,8 +138,8 @@ RayHit RayCaster::closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3
   return result;
 }
 
-void RayCaster::closestHits(int count, const float* const origin[3], const float* const direction[3],
-                            int* element, float* distance) const {
+void RayCaster::closestHits(int count, const float* const origin[3],
+                            const float* const direction[3], int* element, float* distance) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit;

@@ -23,8 +23,10 @@ class BadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(BadInput, FailsClearlyAndWritesNothing) {
   const BadCase& c = GetParam();
-  const auto out = testing::scratchPath("bad_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + c.file);
-  const auto result = testing::runRadiosity("solve " + kBad + c.file + " --out " + out.string() + " --rays 16");
+  const auto out = testing::scratchPath(
+      "bad_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + c.file);
+  const auto result =
+      testing::runRadiosity("solve " + kBad + c.file + " --out " + out.string() + " --rays 16");
   EXPECT_EQ(result.exitCode, 1) << result.stderrText;
   EXPECT_NE(result.stderrText.find("error: "), std::string::npos) << result.stderrText;
   EXPECT_NE(result.stderrText.find(c.location), std::string::npos) << result.stderrText;
@@ -34,19 +36,22 @@ TEST_P(BadInput, FailsClearlyAndWritesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(
     Files, BadInput,
-    ::testing::Values(BadCase{"nan_vertex.obj", "nan_vertex.obj:5:", "non-finite"},
-                      BadCase{"malformed_number.obj", "malformed_number.obj:5:", "malformed number"},
-                      BadCase{"missing_material.obj", "missing_material.obj:13:", "missing material"},
-                      BadCase{"missing_mtllib.obj", "missing_mtllib.obj:2:", "cannot open material library"},
-                      BadCase{"reflectance_one.obj", "reflectance_one.mtl:8:", "reflectance must be in [0, 1)"},
-                      BadCase{"negative_emission.obj", "negative_emission.mtl:4:", "emission must be non-negative"},
-                      BadCase{"no_emitter.obj", "no_emitter.obj", "no emitter"},
-                      BadCase{"bad_index.obj", "bad_index.obj:14:", "out of range"},
-                      BadCase{"short_face.obj", "short_face.obj:14:", "at least 3"},
-                      BadCase{"does_not_exist.obj", "does_not_exist.obj", "cannot open"}),
+    ::testing::Values(
+        BadCase{"nan_vertex.obj", "nan_vertex.obj:5:", "non-finite"},
+        BadCase{"malformed_number.obj", "malformed_number.obj:5:", "malformed number"},
+        BadCase{"missing_material.obj", "missing_material.obj:13:", "missing material"},
+        BadCase{"missing_mtllib.obj", "missing_mtllib.obj:2:", "cannot open material library"},
+        BadCase{"reflectance_one.obj", "reflectance_one.mtl:8:", "reflectance must be in [0, 1)"},
+        BadCase{"negative_emission.obj",
+                "negative_emission.mtl:4:", "emission must be non-negative"},
+        BadCase{"no_emitter.obj", "no_emitter.obj", "no emitter"},
+        BadCase{"bad_index.obj", "bad_index.obj:14:", "out of range"},
+        BadCase{"short_face.obj", "short_face.obj:14:", "at least 3"},
+        BadCase{"does_not_exist.obj", "does_not_exist.obj", "cannot open"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.file.substr(0, info.param.file.find('.'));
-      for (char& ch : name) if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      for (char& ch : name)
+        if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
       return name;
     });
 
@@ -54,7 +59,8 @@ const std::string kCornell = std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cor
 
 TEST(BadOptions, UnknownOptionIsAUsageError) {
   const auto out = testing::scratchPath("unknown_option");
-  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --frobnicate 3");
+  const auto result =
+      testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --frobnicate 3");
   EXPECT_EQ(result.exitCode, 2);
   EXPECT_NE(result.stderrText.find("frobnicate"), std::string::npos) << result.stderrText;
   EXPECT_FALSE(std::filesystem::exists(out));
@@ -63,10 +69,12 @@ TEST(BadOptions, UnknownOptionIsAUsageError) {
 TEST(BadOptions, UnknownSolverAndImpossibleValuesAreErrors) {
   const auto out = testing::scratchPath("bad_values");
   for (const std::string args : {"--solver magic", "--rays 0", "--tolerance -1", "--max-area -2",
-                                  "--bounces 3 --solver gauss-seidel", "--rays abc"}) {
-    const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " " + args);
+                                 "--bounces 3 --solver gauss-seidel", "--rays abc"}) {
+    const auto result =
+        testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " " + args);
     EXPECT_NE(result.exitCode, 0) << args;
-    EXPECT_NE(result.stderrText.find("rror"), std::string::npos) << args << ": " << result.stderrText;
+    EXPECT_NE(result.stderrText.find("rror"), std::string::npos)
+        << args << ": " << result.stderrText;
     EXPECT_FALSE(std::filesystem::exists(out)) << args;
   }
 }
@@ -74,7 +82,8 @@ TEST(BadOptions, UnknownSolverAndImpossibleValuesAreErrors) {
 TEST(BadOptions, OutputPathThatIsAFileFailsWithoutTouchingIt) {
   const auto out = testing::scratchPath("out_is_file");
   { std::ofstream(out) << "keep me\n"; }
-  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --rays 16 --elements 50");
+  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() +
+                                            " --rays 16 --elements 50");
   EXPECT_EQ(result.exitCode, 1) << result.stderrText;
   EXPECT_NE(result.stderrText.find(out.string()), std::string::npos) << result.stderrText;
   std::ifstream in(out);
@@ -86,7 +95,8 @@ TEST(BadOptions, OutputPathThatIsAFileFailsWithoutTouchingIt) {
 
 TEST(BadOptions, AbsurdElementCountIsRejectedBeforeAnyWork) {
   const auto out = testing::scratchPath("too_many_elements");
-  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --max-area 1e-12");
+  const auto result =
+      testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --max-area 1e-12");
   EXPECT_EQ(result.exitCode, 1);
   EXPECT_NE(result.stderrText.find("--max-area"), std::string::npos) << result.stderrText;
   EXPECT_FALSE(std::filesystem::exists(out));
@@ -97,7 +107,8 @@ TEST(PartialOutput, AFileThatCannotBeWrittenLeavesNoneOfTheOthers) {
   // summary.json, though complete, must not appear either.
   const auto out = testing::scratchPath("blocked_ply");
   std::filesystem::create_directories(out / "vertex_colors.ply");
-  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() + " --rays 16 --elements 50");
+  const auto result = testing::runRadiosity("solve " + kCornell + " --out " + out.string() +
+                                            " --rays 16 --elements 50");
   EXPECT_EQ(result.exitCode, 1) << result.stderrText;
   EXPECT_FALSE(std::filesystem::exists(out / "elements.csv"));
   EXPECT_FALSE(std::filesystem::exists(out / "summary.json"));

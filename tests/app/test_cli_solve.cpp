@@ -29,8 +29,9 @@ std::vector<std::vector<double>> readCsv(const std::filesystem::path& path, std:
 
 TEST(CliSolve, CornellBoxWritesConsistentOutputs) {
   const auto out = testing::scratchPath("cornell");
-  const auto result = testing::runRadiosity("solve " + kData + "/cornell_box/cornell_box.obj --out " +
-                                            out.string() + " --elements 300 --rays 256 --seed 4");
+  const auto result =
+      testing::runRadiosity("solve " + kData + "/cornell_box/cornell_box.obj --out " +
+                            out.string() + " --elements 300 --rays 256 --seed 4");
   ASSERT_EQ(result.exitCode, 0) << result.stderrText;
   for (const char* name : {"elements.csv", "vertex_colors.ply", "summary.json"})
     EXPECT_TRUE(std::filesystem::is_regular_file(out / name)) << name;
@@ -71,9 +72,10 @@ TEST(CliSolve, CornellBoxWritesConsistentOutputs) {
 TEST(CliSolve, SameSeedGivesByteIdenticalCsvAndOtherSeedDiffers) {
   auto run = [](const std::string& name, int seed, int threads) {
     const auto out = testing::scratchPath(name);
-    const auto r = testing::runRadiosity("solve " + kData + "/cornell_box/cornell_box.obj --out " +
-                                         out.string() + " --elements 150 --rays 64 --quiet --seed " +
-                                         std::to_string(seed) + " --threads " + std::to_string(threads));
+    const auto r =
+        testing::runRadiosity("solve " + kData + "/cornell_box/cornell_box.obj --out " +
+                              out.string() + " --elements 150 --rays 64 --quiet --seed " +
+                              std::to_string(seed) + " --threads " + std::to_string(threads));
     EXPECT_EQ(r.exitCode, 0) << r.stderrText;
     std::ifstream in(out / "elements.csv");
     std::stringstream text;
@@ -88,7 +90,8 @@ TEST(CliSolve, SameSeedGivesByteIdenticalCsvAndOtherSeedDiffers) {
 
 TEST(CliSolve, AnalyticFormFactorsShootFromPatchesToElements) {
   const auto out = testing::scratchPath("cornell_analytic");
-  const auto r = testing::runRadiosity("solve " + kData + "/cornell_box/cornell_box.obj --out " + out.string() +
+  const auto r = testing::runRadiosity("solve " + kData + "/cornell_box/cornell_box.obj --out " +
+                                       out.string() +
                                        " --form-factors analytic --elements 300 --shadow-rays 4");
   ASSERT_EQ(r.exitCode, 0) << r.stderrText;
   std::ifstream summaryFile(out / "summary.json");
@@ -104,8 +107,9 @@ TEST(CliSolve, AnalyticFormFactorsShootFromPatchesToElements) {
 TEST(CliSolve, JacobiBouncesInTheFurnaceBox) {
   // Furnace box: rho = 0.5, Ke = 1, so E = pi and after k bounces B = pi (1 − 0.5^(k+1)) / 0.5.
   const auto out = testing::scratchPath("furnace_bounces");
-  const auto r = testing::runRadiosity("solve " + kData + "/tests/furnace_box.obj --out " + out.string() +
-                                       " --solver jacobi --bounces 3 --rays 64 --elements 100");
+  const auto r =
+      testing::runRadiosity("solve " + kData + "/tests/furnace_box.obj --out " + out.string() +
+                            " --solver jacobi --bounces 3 --rays 64 --elements 100");
   ASSERT_EQ(r.exitCode, 0) << r.stderrText;
   std::string header;
   const double expected = M_PI * (1 - std::pow(0.5, 4)) / 0.5;

@@ -4,7 +4,6 @@
 #include <tiny_gltf.h>
 
 #include <Eigen/Core>
-
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -196,8 +195,7 @@ std::vector<Eigen::Vector2d> glbLightmapUvs(const fs::path& glb) {
 
 TEST(CliBake, FurnaceBakedIntoItsOwnUvsIsUniformInsideItsIslands) {
   const fs::path dir = scratchPath("bake_scene_uvs");
-  const auto r = runRadiosity("bake " + kData + "/tests/furnace_box_uv.obj --out " +
-                              dir.string() +
+  const auto r = runRadiosity("bake " + kData + "/tests/furnace_box_uv.obj --out " + dir.string() +
                               " --use-scene-uvs --solver gauss-seidel --tolerance 1e-8 "
                               "--elements 300 --rays 64 --lightmap-size 64 --quiet");
   ASSERT_EQ(r.exitCode, 0) << r.stderrText;
@@ -228,8 +226,7 @@ TEST(CliBake, FurnaceBakedIntoItsOwnUvsIsUniformInsideItsIslands) {
         for (int c = 0; c < 3; ++c) ASSERT_NEAR(p[c], 2.0, 2e-5) << x << "," << y;
         bool near = false;  // a dilated texel: within padding + 1 texels of an island
         for (int dy = -3; dy <= 3; ++dy)
-          for (int dx = -3; dx <= 3; ++dx)
-            near = near || island(u + dx / 64.0, v + dy / 64.0) >= 0;
+          for (int dx = -3; dx <= 3; ++dx) near = near || island(u + dx / 64.0, v + dy / 64.0) >= 0;
         ASSERT_TRUE(near) << x << "," << y;
       }
     }

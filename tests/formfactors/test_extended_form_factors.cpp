@@ -22,23 +22,36 @@ struct MirrorScene {
   const Rgb ks{0.9, 0.8, 0.7};
 
   MirrorScene()
-      : mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-              {1.5, 0.25, 0.25}, {2, 0.25, 0.25}, {2, 0.75, 0.25}, {1.5, 0.75, 0.25},
-              {-3, -3, 1}, {6, -3, 1}, {6, 4, 1}, {-3, 4, 1}},
+      : mesh({{0, 0, 0},
+              {1, 0, 0},
+              {1, 1, 0},
+              {0, 1, 0},
+              {1.5, 0.25, 0.25},
+              {2, 0.25, 0.25},
+              {2, 0.75, 0.25},
+              {1.5, 0.75, 0.25},
+              {-3, -3, 1},
+              {6, -3, 1},
+              {6, 4, 1},
+              {-3, 4, 1}},
              {{{0, 1, 2, 3}, kReceiver}, {{4, 5, 6, 7}, kEmitter}, {{8, 11, 10, 9}, kMirror}}) {
     mesh.subdivideUniform(0.05);
     surfaces.resize(mesh.elementCount());
     for (int e = 0; e < mesh.elementCount(); ++e)
-      if (mesh.material(e) == kMirror) surfaces[e] = {SpecularSurface::Kind::Mirror, ks, Rgb::all(1), 1};
+      if (mesh.material(e) == kMirror)
+        surfaces[e] = {SpecularSurface::Kind::Mirror, ks, Rgb::all(1), 1};
   }
 };
 
 // F from the receiver square to the emitter's mirror image (z = 1.75, facing down), by Gauss
 // quadrature of the exact point-to-polygon factor: the independent reference.
 double receiverToMirrorImage() {
-  const std::vector<Eigen::Vector3d> image = {{1.5, 0.25, 1.75}, {1.5, 0.75, 1.75}, {2, 0.75, 1.75}, {2, 0.25, 1.75}};
-  const double x5[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
-  const double w5[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
+  const std::vector<Eigen::Vector3d> image = {
+      {1.5, 0.25, 1.75}, {1.5, 0.75, 1.75}, {2, 0.75, 1.75}, {2, 0.25, 1.75}};
+  const double x5[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                        0.9061798459386640};
+  const double w5[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                        0.4786286704993665, 0.2369268850561891};
   double f = 0;
   for (int i = 0; i < 5; ++i)
     for (int j = 0; j < 5; ++j)
@@ -64,7 +77,8 @@ TEST(ExtendedFormFactors, ReceiverLitOnlyThroughTheMirrorGetsKsTimesTheImageForm
   }
   ProgressiveSolver solver(problem, cache);
   int emitterElements = 0;
-  for (int e = 0; e < scene.mesh.elementCount(); ++e) emitterElements += scene.mesh.material(e) == MirrorScene::kEmitter;
+  for (int e = 0; e < scene.mesh.elementCount(); ++e)
+    emitterElements += scene.mesh.material(e) == MirrorScene::kEmitter;
   for (int k = 0; k < emitterElements; ++k) solver.step();  // every emitter element shoots once
 
   double receivedArea = 0;
@@ -109,7 +123,7 @@ TEST(ExtendedFormFactors, FresnelAtNormalIncidenceAndTotalInternalReflection) {
   EXPECT_NEAR(fresnelDielectric(1.0, 1.0, 1.5), 0.04, 1e-12);
   EXPECT_NEAR(fresnelDielectric(1.0, 1.5, 1.0), 0.04, 1e-12);
   EXPECT_EQ(fresnelDielectric(std::cos(50 * M_PI / 180), 1.5, 1.0), 1.0);  // critical angle 41.8°
-  EXPECT_NEAR(fresnelDielectric(0.0, 1.0, 1.5), 1.0, 1e-12);                // grazing
+  EXPECT_NEAR(fresnelDielectric(0.0, 1.0, 1.5), 1.0, 1e-12);               // grazing
 }
 
 }  // namespace

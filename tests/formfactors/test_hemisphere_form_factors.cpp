@@ -71,13 +71,15 @@ TEST(HemisphereFormFactors, ParallelUnitSquaresMatchHowell) {
   const double estimate = patchFormFactor(mesh, cache, 0, 1);
   EXPECT_NEAR(estimate, exact, 4 * sigma(exact, raysOnPatch(mesh, 0, 4096)));
   // The reverse direction estimates the same number (equal areas: reciprocity).
-  EXPECT_NEAR(patchFormFactor(mesh, cache, 1, 0), exact, 4 * sigma(exact, raysOnPatch(mesh, 1, 4096)));
+  EXPECT_NEAR(patchFormFactor(mesh, cache, 1, 0), exact,
+              4 * sigma(exact, raysOnPatch(mesh, 1, 4096)));
 }
 
 // Rectangle 1 (1×w, in the plane z = 0, facing +z) and rectangle 2 (1×h, plane y = 0, facing +y)
 // share the edge along x.
 PatchMesh perpendicular(double w, double h) {
-  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, w, 0}, {0, w, 0}, {1, 0, h}, {0, 0, h}};
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, w, 0},
+                                    {0, w, 0}, {1, 0, h}, {0, 0, h}};
   return PatchMesh(p, {{{0, 1, 2, 3}, 0}, {{1, 0, 5, 4}, 1}});
 }
 
@@ -89,7 +91,8 @@ TEST(HemisphereFormFactors, PerpendicularUnitSquaresMatchHowell) {
   FormFactorCache cache(method);
   const double exact = reference::perpendicularRectangles(1, 1, 1);
   ASSERT_NEAR(exact, 0.200044, 1e-6);
-  EXPECT_NEAR(patchFormFactor(mesh, cache, 0, 1), exact, 4 * sigma(exact, raysOnPatch(mesh, 0, 4096)));
+  EXPECT_NEAR(patchFormFactor(mesh, cache, 0, 1), exact,
+              4 * sigma(exact, raysOnPatch(mesh, 0, 4096)));
 }
 
 TEST(HemisphereFormFactors, ReciprocityOfUnequalPerpendicularRectangles) {

@@ -30,8 +30,10 @@ Polygon discFacingDown(double r, double h, int m) {
 // Gauss–Legendre rule (5 points per axis, composite over `cells` cells).
 template <class F>
 double averageOverRectangle(double a, double b, int cells, F pointValue) {
-  const double x5[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
-  const double w5[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
+  const double x5[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                        0.9061798459386640};
+  const double w5[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                        0.4786286704993665, 0.2369268850561891};
   double sum = 0;
   for (int ci = 0; ci < cells; ++ci)
     for (int cj = 0; cj < cells; ++cj)
@@ -87,10 +89,13 @@ TEST(PointToPolygon, AreaIntegralsMatchHowellWithinHalfAPercent) {
 }
 
 TEST(PointToPolygon, CoaxialDiscs) {
-  // r1 = r2 = L = 1: F = 0.381966. Integrate over disc 1 in polar coordinates (Gauss in r², uniform in φ).
+  // r1 = r2 = L = 1: F = 0.381966. Integrate over disc 1 in polar coordinates (Gauss in r², uniform
+  // in φ).
   const Polygon upper = discFacingDown(1, 1, 720);
-  const double x5[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
-  const double w5[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
+  const double x5[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                        0.9061798459386640};
+  const double w5[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                        0.4786286704993665, 0.2369268850561891};
   double f = 0;
   for (int i = 0; i < 5; ++i) {
     const double s = 0.5 + 0.5 * x5[i];  // s = r², uniform in area

@@ -11,7 +11,8 @@ namespace {
 
 // Two unit squares meeting at a right angle along x (an L), sharing the edge's two vertices.
 PatchMesh makeL() {
-  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 1}, {0, 0, 1}};
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
+                                    {0, 1, 0}, {1, 0, 1}, {0, 0, 1}};
   return PatchMesh(p, {{{0, 1, 2, 3}, 0}, {{1, 0, 5, 4}, 1}});
 }
 
@@ -26,7 +27,8 @@ bool strictlyInside(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Ei
 void expectConforming(const PatchMesh& mesh) {
   const TriMesh& m = mesh.mesh();
   for (auto e : m.edges()) {
-    const int faces = !m.is_boundary(m.halfedge_handle(e, 0)) + !m.is_boundary(m.halfedge_handle(e, 1));
+    const int faces =
+        !m.is_boundary(m.halfedge_handle(e, 0)) + !m.is_boundary(m.halfedge_handle(e, 1));
     EXPECT_GE(faces, 1);
     EXPECT_LE(faces, 2);
   }
@@ -49,7 +51,8 @@ TEST(PatchMesh, KeepsPatchesAndMaterials) {
   for (int e = 0; e < mesh.elementCount(); ++e) {
     EXPECT_EQ(mesh.material(e), mesh.patch(e));
     // The first square faces +z, the second (wound 1,0,5,4) faces +y.
-    const Eigen::Vector3d expected = mesh.patch(e) == 0 ? Eigen::Vector3d(0, 0, 1) : Eigen::Vector3d(0, 1, 0);
+    const Eigen::Vector3d expected =
+        mesh.patch(e) == 0 ? Eigen::Vector3d(0, 0, 1) : Eigen::Vector3d(0, 1, 0);
     EXPECT_NEAR((mesh.normal(e) - expected).norm(), 0, 1e-12);
   }
 }
@@ -81,7 +84,8 @@ TEST(PatchMesh, BisectionAcrossPatchesKeepsSharedEdgeConforming) {
 
 TEST(PolygonTriangulation, NonConvexPolygonKeepsArea) {
   // An L-shaped hexagon of area 3.
-  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0},
+                                    {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
   const auto triangles = triangulatePolygon(p);
   ASSERT_EQ(triangles.size(), 4u);
   double area = 0;
@@ -117,8 +121,7 @@ TEST(PatchMesh, ShootersTileTheSurfaceAndContainTheirElements) {
     const auto c = mesh.shooterCorners(s);
     const Eigen::Vector3d q = mesh.centroid(e);
     const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]);
-    for (int k = 0; k < 3; ++k)
-      EXPECT_GE((c[(k + 1) % 3] - c[k]).cross(q - c[k]).dot(n), -1e-12);
+    for (int k = 0; k < 3; ++k) EXPECT_GE((c[(k + 1) % 3] - c[k]).cross(q - c[k]).dot(n), -1e-12);
   }
   double total = 0;
   for (int s = 0; s < shooters; ++s) {

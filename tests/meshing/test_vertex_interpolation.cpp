@@ -7,12 +7,14 @@ namespace {
 
 TEST(VertexInterpolation, SplitsAtMaterialAndCreaseButNotInsideAPatch) {
   // Two unit squares at a right angle sharing an edge; then the same two coplanar.
-  std::vector<Eigen::Vector3d> bent = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 1}, {0, 0, 1}};
+  std::vector<Eigen::Vector3d> bent = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
+                                       {0, 1, 0}, {1, 0, 1}, {0, 0, 1}};
   PatchMesh l(bent, {{{0, 1, 2, 3}, 0}, {{1, 0, 5, 4}, 0}});
   // 6 mesh vertices; the 2 on the crease are split in two.
   EXPECT_EQ(VertexInterpolation(l).vertexCount(), 8);
 
-  std::vector<Eigen::Vector3d> flat = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, -1, 0}, {0, -1, 0}};
+  std::vector<Eigen::Vector3d> flat = {{0, 0, 0}, {1, 0, 0},  {1, 1, 0},
+                                       {0, 1, 0}, {1, -1, 0}, {0, -1, 0}};
   PatchMesh same(flat, {{{0, 1, 2, 3}, 0}, {{5, 4, 1, 0}, 0}});
   EXPECT_EQ(VertexInterpolation(same).vertexCount(), 6);
   PatchMesh different(flat, {{{0, 1, 2, 3}, 0}, {{5, 4, 1, 0}, 1}});
@@ -26,7 +28,8 @@ TEST(VertexInterpolation, AreaWeightedMeanReproducesLinearFieldAtInteriorVertex)
   const VertexInterpolation interpolation(mesh);
   // A constant field stays constant at every vertex.
   std::vector<Eigen::Vector3d> values(mesh.elementCount(), Eigen::Vector3d(1, 2, 3));
-  for (const auto& v : interpolation.interpolate(values)) EXPECT_NEAR((v - Eigen::Vector3d(1, 2, 3)).norm(), 0, 1e-12);
+  for (const auto& v : interpolation.interpolate(values))
+    EXPECT_NEAR((v - Eigen::Vector3d(1, 2, 3)).norm(), 0, 1e-12);
   EXPECT_EQ(interpolation.vertexCount(), mesh.vertexCount());
 }
 
@@ -35,13 +38,14 @@ TEST(VertexInterpolation, LinearFieldsThroughTheGaussPointsAreExactAtBordersAndC
   // crease vertices take each side's own value). Sampled at each element's Gauss points, the
   // per-element planes evaluated at the corners and averaged reproduce both fields at every
   // vertex, border and crease included; the element means at the centroids do not (one-sided).
-  std::vector<Eigen::Vector3d> bent = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 0, 1}, {0, 0, 1}};
+  std::vector<Eigen::Vector3d> bent = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
+                                       {0, 1, 0}, {1, 0, 1}, {0, 0, 1}};
   PatchMesh mesh(bent, {{{0, 1, 2, 3}, 0}, {{1, 0, 5, 4}, 0}});
   mesh.subdivideUniform(0.02);
   const VertexInterpolation interpolation(mesh);
   auto field = [](const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
     const double onFloor = 1 + 3 * p.x() - 2 * p.y();  // the square at z = 0
-    const double onWall = 2 + 5 * p.z() + p.x();        // the square at y = 0
+    const double onWall = 2 + 5 * p.z() + p.x();       // the square at y = 0
     return Eigen::Vector3d(n.z() != 0 ? onFloor : onWall, 1, 0);
   };
   std::vector<std::array<Eigen::Vector3d, 3>> corners(mesh.elementCount());

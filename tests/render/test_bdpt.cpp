@@ -78,9 +78,9 @@ void expectAgree(const RenderOutput& a, const RenderOutput& b, bool onePercent =
   const double sigma = std::hypot(meanSigma(a.variance), meanSigma(b.variance));
   EXPECT_NEAR(meanB, meanA, 4 * sigma);
   if (onePercent) {
-    ASSERT_LT(2.5 * sigma, 0.01 * meanA) << "too few samples for a 1% test: sigma A "
-                                         << meanSigma(a.variance) << ", B "
-                                         << meanSigma(b.variance);
+    ASSERT_LT(2.5 * sigma, 0.01 * meanA)
+        << "too few samples for a 1% test: sigma A " << meanSigma(a.variance) << ", B "
+        << meanSigma(b.variance);
     EXPECT_NEAR(meanB, meanA, 0.01 * meanA);
   }
   double squared = 0, expected = 0;

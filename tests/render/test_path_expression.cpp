@@ -43,14 +43,14 @@ TEST(PathExpression, AlternationAndGroups) {
   EXPECT_TRUE(matches("LE|LDE", "LDE"));
   EXPECT_TRUE(matches("(LD)+E", "LDLDE"));
   EXPECT_TRUE(matches("L ( D | S ) + E", "LSDE"));  // spaces are ignored
-  EXPECT_TRUE(matches("LD**E", "LDDE"));           // a repeated repetition is still one
+  EXPECT_TRUE(matches("LD**E", "LDDE"));            // a repeated repetition is still one
 }
 
 // The four expressions of the partition test cover every L(D|S)*E label exactly once.
 TEST(PathExpression, PartitionCoversEveryLabelOnce) {
   const std::vector<PathExpression> parts = {
-      PathExpression::parse("LE"), PathExpression::parse("LDE"),
-      PathExpression::parse("LD(D|S)+E"), PathExpression::parse("LS(D|S)*E")};
+      PathExpression::parse("LE"), PathExpression::parse("LDE"), PathExpression::parse("LD(D|S)+E"),
+      PathExpression::parse("LS(D|S)*E")};
   const std::string symbols = "DS";
   for (int length = 0; length <= 6; ++length)
     for (int code = 0; code < (1 << length); ++code) {

@@ -19,7 +19,8 @@ TEST(MemoryEstimate, BoundsRowsByRaysOrElementsAndPatches) {
   // Analytic: elements × shooting patches, whatever the ray count.
   EXPECT_EQ(formFactorMemoryEstimate(FormFactorMethod::Analytic, 4000, 500, 1), 4000u * 500 * 12);
   // With 3 receiver points each entry also keeps 3 single-precision point factors.
-  EXPECT_EQ(formFactorMemoryEstimate(FormFactorMethod::Analytic, 4000, 500, 1, 3), 4000u * 500 * 24);
+  EXPECT_EQ(formFactorMemoryEstimate(FormFactorMethod::Analytic, 4000, 500, 1, 3),
+            4000u * 500 * 24);
   // No overflow at the element limit with the largest ray count.
   EXPECT_EQ(formFactorMemoryEstimate(FormFactorMethod::Hemisphere, 4000000, 4000000, 1 << 24),
             uint64_t{4000000} * 4000000 * 12);

@@ -200,7 +200,8 @@ TEST_F(ObjEdgeCases, ObjErrorsCarryTheirLine) {
   expectError("huge.obj", "huge.obj", 1, "non-finite number '1e999'");
   // strtod reads "0.e372702" as 0, tinyobjloader as 0 × pow(10, 372702) = NaN (a fuzzer find).
   write("nan.obj", head + "v 0.e372702 0 0\n");
-  expectError("nan.obj", "nan.obj", 7, "number '0.e372702' in 'v' statement has an exponent beyond");
+  expectError("nan.obj", "nan.obj", 7,
+              "number '0.e372702' in 'v' statement has an exponent beyond");
   write("tiny.obj", head + "vt 1e-400 0\n");
   expectError("tiny.obj", "tiny.obj", 7, "exponent beyond ±308");
   write("two.obj", "v 1 2\n");
@@ -216,9 +217,10 @@ TEST_F(ObjEdgeCases, ObjErrorsCarryTheirLine) {
 // Exponents within a double's range, however written, are read as strtod reads them.
 TEST_F(ObjEdgeCases, ExponentsWithinRangeAreAccepted) {
   write("m.mtl", kMaterials);
-  const Scene scene = loadObjScene(write(
-      "e.obj", "mtllib m.mtl\nv 0 0 0\nv 1e+0000000 0 0\nv 1E0 10e-1 0\nv 0 0.01e+002 1e-308\n"
-               "usemtl lamp\nf 1 2 3 4\n"));
+  const Scene scene = loadObjScene(
+      write("e.obj",
+            "mtllib m.mtl\nv 0 0 0\nv 1e+0000000 0 0\nv 1E0 10e-1 0\nv 0 0.01e+002 1e-308\n"
+            "usemtl lamp\nf 1 2 3 4\n"));
   ASSERT_EQ(scene.positions.size(), 4u);
   EXPECT_EQ(scene.positions[1].x(), 1.0);
   EXPECT_EQ(scene.positions[2].y(), 1.0);

@@ -26,7 +26,8 @@ class AdaptiveCornell : public ::testing::Test {
     options.shadowRays = 16;
     options.tolerance = 1e-5;
     setLogLevel(LogLevel::Quiet);
-    result_ = new SolveResult(solveScene(loadObjScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj"), options));
+    result_ = new SolveResult(
+        solveScene(loadObjScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj"), options));
   }
   static void TearDownTestSuite() { delete result_; }
   static inline SolveResult* result_;
@@ -45,7 +46,8 @@ TEST_F(AdaptiveCornell, RefinedMeshIsConformingAndKeepsTheArea) {
   ASSERT_GT(mesh.elementCount(), result_->elementsBeforeRefinement);
   const TriMesh& m = mesh.mesh();
   for (auto e : m.edges()) {
-    const int faces = !m.is_boundary(m.halfedge_handle(e, 0)) + !m.is_boundary(m.halfedge_handle(e, 1));
+    const int faces =
+        !m.is_boundary(m.halfedge_handle(e, 0)) + !m.is_boundary(m.halfedge_handle(e, 1));
     ASSERT_GE(faces, 1);
     ASSERT_LE(faces, 2);
   }
@@ -125,7 +127,8 @@ TEST_F(AdaptiveCornell, ContinuedSolveEqualsAFreshSolveOnTheRefinedMesh) {
   ProgressiveSolver fresh(result_->problem, shots);
   while (fresh.progress() > 1e-5) fresh.step();
   std::vector<Rgb> difference(mesh.elementCount());
-  for (int e = 0; e < mesh.elementCount(); ++e) difference[e] = fresh.solution()[e] - result_->radiosity[e];
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    difference[e] = fresh.solution()[e] - result_->radiosity[e];
   // Both stopped with at most 1e-5 of the power unshot; what that can still change is
   // rho/(1 − rho) of it, below 3e-5 for rho <= 0.725.
   EXPECT_LT(relativeToEmission(result_->problem, difference), 1e-4);

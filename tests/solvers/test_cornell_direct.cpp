@@ -29,8 +29,14 @@ class CornellDirect : public ::testing::Test {
     direct_ = new std::vector<Rgb>(solveDirect(*problem_, *f_));
   }
   static void TearDownTestSuite() {
-    delete direct_; delete f_; delete problem_; delete cache_; delete method_; delete rays_;
-    delete mesh_; delete scene_;
+    delete direct_;
+    delete f_;
+    delete problem_;
+    delete cache_;
+    delete method_;
+    delete rays_;
+    delete mesh_;
+    delete scene_;
   }
 
   // Area-weighted L1 difference relative to the emitted power, and the largest reflectance:
@@ -84,7 +90,8 @@ TEST_F(CornellDirect, SouthwellShootingAgrees) {
   ProgressiveSolver solver(*problem_, columns);
   run(solver, tolerance);
   // Unshot power U still owed at most U·rho_max/(1 − rho_max) to the solution.
-  EXPECT_LT(relativeDifference(solver.solution()), tolerance * maxReflectance() / (1 - maxReflectance()));
+  EXPECT_LT(relativeDifference(solver.solution()),
+            tolerance * maxReflectance() / (1 - maxReflectance()));
 }
 
 TEST_F(CornellDirect, LazyProgressiveSolvesTheReciprocalSystem) {
@@ -104,7 +111,8 @@ TEST_F(CornellDirect, LazyProgressiveSolvesTheReciprocalSystem) {
   run(solver, tolerance);
   std::vector<Rgb> d(n);
   for (int i = 0; i < n; ++i) d[i] = solver.solution()[i] - reference[i];
-  EXPECT_LT(relativeToEmission(*problem_, d), tolerance * maxReflectance() / (1 - maxReflectance()));
+  EXPECT_LT(relativeToEmission(*problem_, d),
+            tolerance * maxReflectance() / (1 - maxReflectance()));
 }
 
 }  // namespace

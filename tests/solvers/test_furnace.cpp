@@ -52,8 +52,10 @@ TEST_P(FurnaceTest, ConvergesToEOverOneMinusRho) {
     solver = std::make_unique<ProgressiveSolver>(furnace.problem, columns);
     tolerance = 1e-5;  // missing radiosity = rho × unshot fraction (relative)
   } else {
-    if (solverName == "jacobi") solver = std::make_unique<JacobiSolver>(furnace.problem, f);
-    else solver = std::make_unique<GaussSeidelSolver>(furnace.problem, f);
+    if (solverName == "jacobi")
+      solver = std::make_unique<JacobiSolver>(furnace.problem, f);
+    else
+      solver = std::make_unique<GaussSeidelSolver>(furnace.problem, f);
     tolerance = 1e-5 * (1 - rho);  // error <= residual / (1 − rho)
   }
   const int budget = 5000000;
@@ -64,7 +66,8 @@ TEST_P(FurnaceTest, ConvergesToEOverOneMinusRho) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllSolvers, FurnaceTest,
-                         ::testing::Combine(::testing::Values("southwell", "gauss-seidel", "jacobi"),
+                         ::testing::Combine(::testing::Values("southwell", "gauss-seidel",
+                                                              "jacobi"),
                                             ::testing::Values(0.5, 0.9, 0.99)));
 
 // Lazy shooting uses each shooter's own row, so per element it is exact only up to the noise in

@@ -88,7 +88,8 @@ TEST(ProgressiveShooting, EachShotTakesTheLargestUnshotPower) {
       keys[i] = std::fabs(unshot[i].r) + std::fabs(unshot[i].g) + std::fabs(unshot[i].b);
       total += keys[i];
     }
-    ASSERT_NEAR(solver.progress(), total / problem.emittedPower(), 1e-12 * (total / problem.emittedPower()));
+    ASSERT_NEAR(solver.progress(), total / problem.emittedPower(),
+                1e-12 * (total / problem.emittedPower()));
     const int expected = scanArgmax(keys);
     solver.step();
     ASSERT_EQ(solver.lastShooter(), expected) << "step " << step;

@@ -20,8 +20,8 @@ struct CommandResult {
 inline CommandResult runRadiosity(const std::string& arguments) {
   const auto errFile = std::filesystem::temp_directory_path() /
                        ("radiosity_stderr_" + std::to_string(::getpid()) + ".txt");
-  const std::string command =
-      std::string(RADIOSITY_BINARY) + " " + arguments + " >/dev/null 2>" + errFile.string() + " </dev/null";
+  const std::string command = std::string(RADIOSITY_BINARY) + " " + arguments + " >/dev/null 2>" +
+                              errFile.string() + " </dev/null";
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

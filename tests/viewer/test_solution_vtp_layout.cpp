@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <vtkCellArray.h>
-#include <zlib.h>
 #include <vtkFieldData.h>
 #include <vtkStringArray.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -134,8 +134,8 @@ TEST(SolutionVtpLayout, XmlTheWriterNeverWritesIsRefused) {
       {"more_polys", "NumberOfPolys=\"", "NumberOfPolys=\"1", "bytes, expected"},
       {"more_points", "NumberOfPoints=\"", "NumberOfPoints=\"2", "bytes, expected"},
       {"bit_type", "type=\"Int32\" Name=\"patch\"", "type=\"Bit\" Name=\"patch\"", "unknown type"},
-      {"cell_string", "<DataArray type=\"Int32\" Name=\"level\"", "<Array type=\"String\" Name=\"level\"",
-       "outside field data"},
+      {"cell_string", "<DataArray type=\"Int32\" Name=\"level\"",
+       "<Array type=\"String\" Name=\"level\"", "outside field data"},
       {"attribute", "Name=\"area\"", "Name=\"area\" ComponentName0=\"x\"", "unexpected attribute"},
       {"entity", "Name=\"area\"", "Name=\"a&amp;rea\"", "character"},
       {"verts", "NumberOfVerts=\"0\"", "NumberOfVerts=\"1\"", "triangles only"},
@@ -150,7 +150,8 @@ TEST(SolutionVtpLayout, XmlTheWriterNeverWritesIsRefused) {
   for (const Case& c : cases) {
     const std::string bad = edited(bytes, c.from, c.to);
     const InputError e = refusal(c.name, bad);
-    EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos) << c.name << ": " << e.what();
+    EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos)
+        << c.name << ": " << e.what();
     EXPECT_GT(e.line(), 0) << c.name << ": " << e.what();
   }
 }
@@ -202,8 +203,8 @@ TEST(SolutionVtpLayout, CellsOtherThanTrianglesAreRefused) {
   const uLong raw = static_cast<uLong>(offsets.size() * sizeof(std::int64_t));
   std::vector<unsigned char> packed(compressBound(raw));
   uLongf packedSize = packed.size();
-  ASSERT_EQ(compress2(packed.data(), &packedSize,
-                      reinterpret_cast<const Bytef*>(offsets.data()), raw, Z_DEFAULT_COMPRESSION),
+  ASSERT_EQ(compress2(packed.data(), &packedSize, reinterpret_cast<const Bytef*>(offsets.data()),
+                      raw, Z_DEFAULT_COMPRESSION),
             Z_OK);
   const std::uint32_t header[4] = {1, 32768, static_cast<std::uint32_t>(raw),
                                    static_cast<std::uint32_t>(packedSize)};
@@ -218,8 +219,8 @@ TEST(SolutionVtpLayout, CellsOtherThanTrianglesAreRefused) {
   // The same bytes with 3 restored pass: the replacement itself is what the writer writes.
   offsets[0] = 3;
   packedSize = packed.size();
-  ASSERT_EQ(compress2(packed.data(), &packedSize,
-                      reinterpret_cast<const Bytef*>(offsets.data()), raw, Z_DEFAULT_COMPRESSION),
+  ASSERT_EQ(compress2(packed.data(), &packedSize, reinterpret_cast<const Bytef*>(offsets.data()),
+                      raw, Z_DEFAULT_COMPRESSION),
             Z_OK);
   std::string good = bytes.substr(0, lastArray);
   const std::uint32_t goodHeader[4] = {1, 32768, static_cast<std::uint32_t>(raw),

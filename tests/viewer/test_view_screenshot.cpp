@@ -193,7 +193,8 @@ TEST(ViewScreenshot, SteppedSolverBrightensTowardsTheSolution) {
 TEST(ViewScreenshot, FilesThatCrashedVtksReaderAreRefused) {
   if (!haveXvfb())
     GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
-  const std::string corpus = std::string(RADIOSITY_DATA_DIR) + "/../tests/fuzz/corpus/solution_vtp/";
+  const std::string corpus =
+      std::string(RADIOSITY_DATA_DIR) + "/../tests/fuzz/corpus/solution_vtp/";
   const fs::path dir = testing::scratchPath("view_vtk_crash");
   fs::create_directories(dir);
   for (const char* name :
