@@ -32,9 +32,9 @@
 #include <vector>
 
 #include "meshing/vertex_interpolation.h"
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
 #include "radiosity/output/vertex_colors_ply.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 
@@ -101,18 +101,19 @@ class DisplayedRadiance {
   // elementMeans: vertices take the area-weighted mean of their elements' values (the display
   // before receiver-point values); otherwise the vertex colours `radiosity solve` writes.
   explicit DisplayedRadiance(const SolveResult& r, bool elementMeans = false)
-      : result_(r), interpolation_(*r.mesh) {
+      : result_(r), interpolation_(*r.solution.mesh) {
     const std::vector<std::array<Rgb, 3>> none;
-    for (const Rgb& l : interpolateVertexRadiance(interpolation_, r.radiosity,
-                                                  elementMeans ? none : r.pointRadiosity))
+    for (const Rgb& l : interpolateVertexRadiance(interpolation_, r.solution.radiosity,
+                                                  elementMeans ? none : r.solution.pointRadiosity))
       vertexValues_.emplace_back(l.r, l.g, l.b);
-    byPatch_.resize(r.mesh->patchCount());
-    for (int e = 0; e < r.mesh->elementCount(); ++e) byPatch_[r.mesh->patch(e)].push_back(e);
+    byPatch_.resize(r.solution.mesh->patchCount());
+    for (int e = 0; e < r.solution.mesh->elementCount(); ++e)
+      byPatch_[r.solution.mesh->patch(e)].push_back(e);
   }
 
   // Element containing p and p's barycentric weights in it.
   int locate(int patch, const Eigen::Vector3d& p, Eigen::Vector3d& weights) const {
-    const PatchMesh& mesh = *result_.mesh;
+    const PatchMesh& mesh = *result_.solution.mesh;
     int best = -1;
     double bestOutside = 1e300;
     for (int e : byPatch_[patch]) {
@@ -152,15 +153,15 @@ class DisplayedRadiance {
 template <class Value>
 double relativeRms(const SolveResult& reference, Value value,
                    std::map<std::string, double>* byObject = nullptr) {
-  const PatchMesh& ref = *reference.mesh;
+  const PatchMesh& ref = *reference.solution.mesh;
   double num = 0, den = 0;
   std::map<std::string, double> parts;
   for (int e = 0; e < ref.elementCount(); ++e) {
-    if (reference.problem.emission[e].maxComponent() > 0) continue;
-    const Eigen::Vector3d truth = radiance(reference.radiosity[e]);
+    if (reference.solution.problem.emission[e].maxComponent() > 0) continue;
+    const Eigen::Vector3d truth = radiance(reference.solution.radiosity[e]);
     const double squared = ref.area(e) * (value(e) - truth).squaredNorm();
     num += squared;
-    parts[reference.scene.polygons[ref.patch(e)].object] += squared;
+    parts[reference.solution.scene.polygons[ref.patch(e)].object] += squared;
     den += ref.area(e) * truth.squaredNorm();
   }
   if (byObject)
@@ -205,7 +206,7 @@ int main(int argc, char** argv) {
   auto t0 = std::chrono::steady_clock::now();
   const SolveResult reference = solveReference(scene, referenceElements, 8, 64, 1);
   std::fprintf(stderr, "reference: %d elements, %d shooting patches, %.1f s\n",
-               reference.mesh->elementCount(), reference.shooters, seconds(t0));
+               reference.solution.mesh->elementCount(), reference.report.shooters, seconds(t0));
   // How far is the reference from the truth? A second one on the same elements with coarser
   // shooting patches and fewer shadow rays (another seed) differs from it by about its own error
   // or more: the errors of both shrink with patch size and ray count.
@@ -214,13 +215,13 @@ int main(int argc, char** argv) {
   const DisplayedRadiance checkField(check);
   const double referenceError = relativeRms(reference, [&](int e) {
     Eigen::Vector3d w;
-    return radiance(check.radiosity[checkField.locate(reference.mesh->patch(e),
-                                                      reference.mesh->centroid(e), w)]);
+    return radiance(check.solution.radiosity[checkField.locate(
+        reference.solution.mesh->patch(e), reference.solution.mesh->centroid(e), w)]);
   });
   std::fprintf(
       stderr,
       "reference check: %d elements, %d shooting patches, %.1f s: relative RMS difference %.4f\n",
-      check.mesh->elementCount(), check.shooters, seconds(t0), referenceError);
+      check.solution.mesh->elementCount(), check.report.shooters, seconds(t0), referenceError);
 
   std::vector<Config> configs;
   for (int n : {125, 250, 500, 1000, 2000, 4000})
@@ -240,22 +241,23 @@ int main(int argc, char** argv) {
                                               : solveAdaptive(scene, c.startElements, c.budget);
     const double time = seconds(t0);
     const DisplayedRadiance field(r), meansField(r, true);
-    const PatchMesh& ref = *reference.mesh;
+    const PatchMesh& ref = *reference.solution.mesh;
     std::map<std::string, double> byObject;
     const double error = relativeRms(
         reference, [&](int e) { return field.at(ref.patch(e), ref.centroid(e)); }, &byObject);
     const double errorMeans =
         relativeRms(reference, [&](int e) { return meansField.at(ref.patch(e), ref.centroid(e)); });
-    points.push_back({c, r.mesh->elementCount(), r.shooters, error, time, errorMeans});
+    points.push_back(
+        {c, r.solution.mesh->elementCount(), r.report.shooters, error, time, errorMeans});
     std::fprintf(stderr,
                  "%-8s start %5d budget %5d: %5d elements, %4d patches, relative RMS error %.4f "
                  "(element means: "
                  "%.4f) (%.1f s)\n",
-                 c.kind.c_str(), c.startElements, c.budget, r.mesh->elementCount(), r.shooters,
-                 error, errorMeans, time);
+                 c.kind.c_str(), c.startElements, c.budget, r.solution.mesh->elementCount(),
+                 r.report.shooters, error, errorMeans, time);
     if (breakdown) {
       std::printf("%s %d elements: squared relative error %.5f =", c.kind.c_str(),
-                  r.mesh->elementCount(), error * error);
+                  r.solution.mesh->elementCount(), error * error);
       for (const auto& [object, part] : byObject) std::printf(" %s %.5f", object.c_str(), part);
       std::printf("\n");
     }
@@ -298,10 +300,10 @@ int main(int argc, char** argv) {
       std::printf("uniform  %5d elements: error %.4f\n", p.elements, p.error);
     }
   }
-  csv << "reference," << referenceElements << ",0," << reference.mesh->elementCount() << ","
-      << reference.shooters << "," << referenceError << ",0,,,,\n";
+  csv << "reference," << referenceElements << ",0," << reference.solution.mesh->elementCount()
+      << "," << reference.report.shooters << "," << referenceError << ",0,,,,\n";
   std::printf("reference %d elements; its check differs from it by %.4f (relative RMS)\n",
-              reference.mesh->elementCount(), referenceError);
+              reference.solution.mesh->elementCount(), referenceError);
   csv.close();
 
   // Log-log plot, elements against error.
@@ -330,7 +332,7 @@ int main(int argc, char** argv) {
          "text-anchor=\"middle\">relative RMS radiance error (log)</text>\n"
       << "<text x=\"320\" y=\"25\" text-anchor=\"middle\">Cornell box: uniform vs adaptive meshing "
          "(reference "
-      << reference.mesh->elementCount() << " elements)</text>\n";
+      << reference.solution.mesh->elementCount() << " elements)</text>\n";
   for (double v : {50., 100., 200., 500., 1000., 2000., 5000.})
     if (std::log10(v) > x0 && std::log10(v) < x1)
       svg << "<text x=\"" << px(v) << "\" y=\"378\" text-anchor=\"middle\">" << v << "</text>\n";

@@ -17,7 +17,6 @@
 #include <memory>
 #include <thread>
 
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
 #include "radiosity/scene/obj_loader.h"

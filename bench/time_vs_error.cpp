@@ -30,9 +30,9 @@
 #include <string>
 #include <vector>
 
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/log.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/scene/obj_loader.h"
 
 namespace {
@@ -49,12 +49,14 @@ struct Config {
 // just outside all of them).
 class ElementLookup {
  public:
-  explicit ElementLookup(const SolveResult& r) : result_(r), byPatch_(r.mesh->patchCount()) {
-    for (int e = 0; e < r.mesh->elementCount(); ++e) byPatch_[r.mesh->patch(e)].push_back(e);
+  explicit ElementLookup(const SolveResult& r)
+      : result_(r), byPatch_(r.solution.mesh->patchCount()) {
+    for (int e = 0; e < r.solution.mesh->elementCount(); ++e)
+      byPatch_[r.solution.mesh->patch(e)].push_back(e);
   }
 
   Eigen::Vector3d radianceAt(int patch, const Eigen::Vector3d& p) const {
-    const PatchMesh& mesh = *result_.mesh;
+    const PatchMesh& mesh = *result_.solution.mesh;
     int best = -1;
     double bestOutside = 1e300;
     for (int e : byPatch_[patch]) {
@@ -70,7 +72,7 @@ class ElementLookup {
         if (outside == 0) break;
       }
     }
-    const Rgb& b = result_.radiosity[best];
+    const Rgb& b = result_.solution.radiosity[best];
     return Eigen::Vector3d(b.r, b.g, b.b) / M_PI;
   }
 
@@ -81,11 +83,11 @@ class ElementLookup {
 
 double relativeRmsError(const SolveResult& reference, const SolveResult& candidate) {
   const ElementLookup lookup(candidate);
-  const PatchMesh& ref = *reference.mesh;
+  const PatchMesh& ref = *reference.solution.mesh;
   double num = 0, den = 0;
   for (int e = 0; e < ref.elementCount(); ++e) {
-    if (reference.problem.emission[e].maxComponent() > 0) continue;
-    const Rgb& b = reference.radiosity[e];
+    if (reference.solution.problem.emission[e].maxComponent() > 0) continue;
+    const Rgb& b = reference.solution.radiosity[e];
     const Eigen::Vector3d truth = Eigen::Vector3d(b.r, b.g, b.b) / M_PI;
     const Eigen::Vector3d value = lookup.radianceAt(ref.patch(e), ref.centroid(e));
     num += ref.area(e) * (value - truth).squaredNorm();
@@ -270,7 +272,7 @@ int main(int argc, char** argv) {
         stderr, "%s: reference %s, %d elements, %.1f s, own noise %.4f (relative RMS)\n",
         name.c_str(),
         analytic ? "analytic" : ("hemisphere " + std::to_string(referenceRays) + " rays").c_str(),
-        reference.mesh->elementCount(), referenceSeconds, referenceNoise);
+        reference.solution.mesh->elementCount(), referenceSeconds, referenceNoise);
     if (specular)
       std::fprintf(
           stderr,
@@ -293,10 +295,11 @@ int main(int argc, char** argv) {
       csv << name << ',' << (analyticConfig ? "analytic" : "hemisphere") << ','
           << solverKindName(o.solver) << ',' << (analyticConfig ? 0 : o.raysPerElement) << ','
           << o.targetElements << ',' << o.refineThreshold << ',' << o.tolerance << ','
-          << r.mesh->elementCount() << ',' << wall << ',' << error << ',' << (r.converged ? 1 : 0)
-          << ',' << reference.mesh->elementCount() << ',' << referenceNoise << '\n';
+          << r.solution.mesh->elementCount() << ',' << wall << ',' << error << ','
+          << (r.report.converged ? 1 : 0) << ',' << reference.solution.mesh->elementCount() << ','
+          << referenceNoise << '\n';
       std::fprintf(stderr, "%s: %-70s %6d elements %7.2f s  error %.4f\n", name.c_str(),
-                   c.label.c_str(), r.mesh->elementCount(), wall, error);
+                   c.label.c_str(), r.solution.mesh->elementCount(), wall, error);
     }
     file.commit();
   } catch (const std::exception& e) {

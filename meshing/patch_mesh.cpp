@@ -24,8 +24,6 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
   mesh_.add_property(level_, "level");
   mesh_.add_property(shooterId_, "shooter");
   mesh_.add_property(area_, "area");
-  mesh_.add_property(radiosity_, "B");
-  mesh_.add_property(unshot_, "unshot");
 
   for (const PatchPolygon& polygon : polygons) {
     if (!polygon.uvs.empty() && polygon.uvs.size() != polygon.vertices.size())
@@ -91,8 +89,6 @@ void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
   mesh_.property(materialId_, f) = material;
   mesh_.property(level_, f) = 0;
   mesh_.property(shooterId_, f) = 0;
-  mesh_.property(radiosity_, f) = Eigen::Vector3d::Zero();
-  mesh_.property(unshot_, f) = Eigen::Vector3d::Zero();
   updateArea(f);
 }
 

@@ -60,17 +60,6 @@ class PatchMesh {
   // How many times the element's ancestry was bisected (0 for the patch's own triangles).
   int level(int element) const { return mesh_.property(level_, face(element)); }
 
-  // The solution stored on the mesh: radiosity B (W/m², per RGB channel) and the unshot
-  // power a progressive solver still holds (W). Zero until a solver writes them.
-  Eigen::Vector3d radiosity(int element) const { return mesh_.property(radiosity_, face(element)); }
-  Eigen::Vector3d unshot(int element) const { return mesh_.property(unshot_, face(element)); }
-  void setRadiosity(int element, const Eigen::Vector3d& b) {
-    mesh_.property(radiosity_, face(element)) = b;
-  }
-  void setUnshot(int element, const Eigen::Vector3d& u) {
-    mesh_.property(unshot_, face(element)) = u;
-  }
-
   double totalArea() const;
   double patchArea(int patch) const;
   Eigen::Vector3d boundsMin() const { return boundsMin_; }
@@ -122,7 +111,6 @@ class PatchMesh {
   std::vector<std::array<Eigen::Vector3d, 3>> shooterCorners_;
   bool shootersMarked_ = false;
   OpenMesh::FPropHandleT<double> area_;
-  OpenMesh::FPropHandleT<Eigen::Vector3d> radiosity_, unshot_;
   OpenMesh::FPropHandleT<FaceUvs> uvs_;  // only when hasUvs_
   bool hasUvs_ = false;
   int patchCount_ = 0;

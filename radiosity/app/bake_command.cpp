@@ -11,17 +11,18 @@
 #include "meshing/mesh_uv_layout.h"
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/app/commands.h"
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/output/display_radiance.h"
 #include "radiosity/output/gltf_export.h"
 #include "radiosity/output/image_io.h"
 #include "radiosity/output/lightmap_bake.h"
 #include "radiosity/output/lightmap_baked_mesh.h"
 #include "radiosity/output/obj_export.h"
 #include "radiosity/output/vertex_colors_ply.h"
+#include "radiosity/pipeline/solution_source.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/lightmap_uv_check.h"
@@ -40,16 +41,17 @@ struct BakeOptions {
   int dilation = -1;  // -1: the padding
   double chartAngle = 30;
   bool noLightmap = false;
-  bool sceneUvs = false;  // bake into the scene's own texture coordinates
-  int gather = 0;         // per-texel final gather rays; 0: interpolate the solution
+  bool sceneUvs = false;    // bake into the scene's own texture coordinates
+  int gather = 0;           // per-texel final gather rays; 0: interpolate the solution
+  std::string solutionDir;  // --solution: reuse the solution `solve` saved there
 };
 
 double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-void runBake(BakeOptions& o) {
-  o.solve.solver = parseSolverKind(o.solverName);
+void runBake(const CLI::App& command, BakeOptions& o) {
+  finishSolveOptions(command, o.solve, o.solverName);
   if (o.dilation < 0) o.dilation = o.padding;
   if (o.dilation > o.padding)
     throw InputError("--dilation " + std::to_string(o.dilation) + " exceeds --padding " +
@@ -60,27 +62,26 @@ void runBake(BakeOptions& o) {
   Scene scene = loadObjScene(o.solve.scenePath);
   if (o.sceneUvs) checkLightmapUvs(scene);
   const double loadSeconds = since(loadStart);
-  SolveResult result = solveScene(std::move(scene), o.solve);
-  result.times.load = loadSeconds;
-  result.times.total += loadSeconds;
-  const PatchMesh& mesh = *result.mesh;
+  SolveResult result = solveOrReuse(std::move(scene), o.solve, {o.solutionDir, ""});
+  result.report.times.load = loadSeconds;
+  result.report.times.total += loadSeconds;
+  const Solution& solution = result.solution;
+  const PatchMesh& mesh = *solution.mesh;
   const auto start = std::chrono::steady_clock::now();
 
   const VertexInterpolation interpolation(mesh);
   const std::vector<Rgb> vertexRadiance =
-      interpolateVertexRadiance(interpolation, result.radiosity, result.pointRadiosity);
-  std::vector<Rgb> elementRadiance(result.radiosity.size());
-  for (size_t e = 0; e < elementRadiance.size(); ++e)
-    elementRadiance[e] = result.radiosity[e] / M_PI;
-  const ToneMap toneMap = ToneMap::autoExposure(elementRadiance, result.problem.area);
+      interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
+  const ToneMap toneMap = solutionToneMap(solution.radiosity, solution.problem.area);
   std::vector<std::string> materialNames;
-  for (const Material& m : result.scene.materials) materialNames.push_back(m.name);
+  for (const Material& m : solution.scene.materials) materialNames.push_back(m.name);
 
   nlohmann::json summary = {{"scene", o.solve.scenePath},
                             {"elements", mesh.elementCount()},
                             {"patches", mesh.patchCount()},
                             {"tone_map_exposure", toneMap.exposure},
-                            {"solve_seconds", result.times.total}};
+                            {"solve_seconds", result.report.times.total},
+                            {"reused_saved_solution", result.report.reusedSavedSolution}};
   LightmapLayout layout;
   Lightmap lightmap;
   std::vector<std::uint8_t> png;
@@ -104,8 +105,8 @@ void runBake(BakeOptions& o) {
       // Per-texel final gather: direct light by shadow rays to the emitters and gathered light
       // from the solution at every texel, for shadows sharper than the elements.
       const RayCaster caster(mesh);
-      const RenderScene view(result.scene, mesh, caster);
-      const FinalGather gather(view, result.radiosity, {o.gather, 16});
+      const RenderScene view(solution.scene, mesh, caster);
+      const FinalGather gather(view, solution.radiosity, {o.gather, 16});
       const uint64_t seed = o.solve.seed;
       lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation,
                               [&](int e, const Eigen::Vector3d& b, size_t texel) {
@@ -224,8 +225,11 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
                  "without overlaps) instead of generating lightmap UVs; charts are its UV islands")
       ->excludes(angle)
       ->excludes(noLightmap);
+  bake->add_option("--solution", o->solutionDir,
+                   "Reuse the solution `radiosity solve` wrote into this directory (same scene and "
+                   "solve options) instead of solving");
   addCommonFlags(*bake);
-  bake->callback([&run, o] { run = [o] { runBake(*o); }; });
+  bake->callback([&run, bake, o] { run = [bake, o] { runBake(*bake, *o); }; });
 }
 
 }  // namespace rad

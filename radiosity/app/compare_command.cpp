@@ -52,7 +52,7 @@ std::string formatSeconds(double s) {
   return out.str();
 }
 
-void runCompare(CompareOptions& o) {
+void runCompare(const CLI::App& command, CompareOptions& o) {
   // Check everything that can be wrong before any long work.
   if (o.spp < 0) throw InputError("--spp must be >= 1");
   if (o.gather < 0) throw InputError("--gather must be >= 0");
@@ -69,7 +69,10 @@ void runCompare(CompareOptions& o) {
       methods.push_back(&m);
     }
   }
-  o.solve.solver = parseSolverKind(o.solverName);
+  bool solves = false;
+  for (const RenderMethod* m : methods) solves = solves || m->needsSolve;
+  finishSolveOptions(command, o.solve, o.solverName,
+                     solves ? "" : "none of the --methods solves radiosity");
   std::string source = o.cameraFile;
   if (source.empty()) {
     source = cameraSidecarPath(o.solve.scenePath);
@@ -200,11 +203,9 @@ void registerCompareCommand(CLI::App& app, CommandAction& run) {
   cmd->add_option("--height", o->height, "Image height in pixels");
   cmd->add_option("--exposure", o->exposure,
                   "Exposure of every tile (default: the path tracer's 99th percentile maps to 1)");
-  o->solve.targetElements = kRenderElements;  // render's solve size (render_methods.h)
-  o->solve.raysPerElement = kRenderRaysPerElement;
   addSolveOptions(*cmd, o->solve, o->solverName);
   addCommonFlags(*cmd);
-  cmd->callback([&run, o] { run = [o] { runCompare(*o); }; });
+  cmd->callback([&run, cmd, o] { run = [cmd, o] { runCompare(*cmd, *o); }; });
 }
 
 }  // namespace rad

@@ -12,13 +12,12 @@
 #include "radiosity/app/commands.h"
 #include "radiosity/app/render_methods.h"
 #include "radiosity/app/render_world.h"
-#include "radiosity/app/saved_solution.h"
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "radiosity/output/image_io.h"
+#include "radiosity/pipeline/saved_solution.h"
 #include "radiosity/render/camera.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
@@ -45,6 +44,7 @@ struct RenderCommandOptions {
   std::optional<double> vfov, lensRadius, focusDistance, exposure;
   std::optional<int> width, height;
   bool freshSolve = false;             // solve even when --out holds a reusable solution
+  std::string solutionDir;             // --solution: reuse the solution `solve` saved there
   std::string paths;                   // --paths: Heckbert expression (path, bdpt)
   std::optional<int> bouncesSeparate;  // --bounces-separate K
   std::string mis = "power";           // --mis (bdpt)
@@ -110,7 +110,7 @@ void checkPathOptions(const RenderCommandOptions& o) {
     throw InputError("--bounces-separate K sets the Jacobi bounces itself: leave out --bounces");
 }
 
-void runRender(RenderCommandOptions& o) {
+void runRender(const CLI::App& command, RenderCommandOptions& o) {
   const auto start = Clock::now();
   const RenderMethod& method = findRenderMethod(o.method);
   checkPathOptions(o);
@@ -130,11 +130,13 @@ void runRender(RenderCommandOptions& o) {
     o.solve.keepBounceTerms = true;
   }
   const int spp = o.spp > 0 ? o.spp : method.defaultSpp;
-  o.solve.solver = parseSolverKind(o.solverName);
+  finishSolveOptions(command, o.solve, o.solverName,
+                     radiosity ? "" : "--method " + method.name + " does not solve radiosity");
   std::string cameraSource;
   // Before any long work: a bad camera or motion description fails at once.
   const Camera camera = resolveCamera(o, cameraSource);
-  RenderWorld world(o.solve, cameraSource, !o.freshSolve);
+  RenderWorld world(o.solve, cameraSource,
+                    {o.solutionDir, o.freshSolve ? std::string() : o.solve.outputDir});
 
   const int threads = o.solve.threads > 0 ? o.solve.threads : tbb::info::default_concurrency();
   tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
@@ -188,7 +190,7 @@ void runRender(RenderCommandOptions& o) {
       // seen through mirrors and glass; linear in B, so the terms sum to the --gather 0 image.
       RenderSettings quiet = settings;
       quiet.showProgress = false;
-      for (const std::vector<Rgb>& term : world.solved()->bounceTerms) {
+      for (const std::vector<Rgb>& term : world.solved()->solution.bounceTerms) {
         const FinalGather eyePass(renderScene, term, FinalGatherOptions{0});
         bounceImages.push_back(renderImage(camera, eyePass, quiet).image);
       }
@@ -297,10 +299,10 @@ void runRender(RenderCommandOptions& o) {
   }
   if (radiosity)
     report["radiosity"] = {{"elements", mesh.elementCount()},
-                           {"solver", world.solved()->solverName},
-                           {"converged", world.solved()->converged},
+                           {"solver", world.solved()->report.solverName},
+                           {"converged", world.solved()->report.converged},
                            {"reused_saved_solution", world.reusedSolution()},
-                           {"form_factor_rays", world.solved()->raysCast}};
+                           {"form_factor_rays", world.solved()->report.raysCast}};
   if (method.usesMotion && !world.motionSpec().empty())
     report["motion_blur"] = {
         {"shutter", {world.motionSpec().shutterOpen, world.motionSpec().shutterClose}},
@@ -371,11 +373,13 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
   cmd->add_flag("--fresh-solve", o->freshSolve,
                 "Solve even when --out holds a solution saved by an earlier render of the same "
                 "scene and solve options (otherwise it is reused)");
-  o->solve.targetElements = kRenderElements;
-  o->solve.raysPerElement = kRenderRaysPerElement;
+  cmd->add_option("--solution", o->solutionDir,
+                  "Reuse the solution `radiosity solve` (or an earlier render) saved in this "
+                  "directory; an error when it was made from another scene or other solve options")
+      ->excludes("--fresh-solve");
   addSolveOptions(*cmd, o->solve, o->solverName);
   addCommonFlags(*cmd);
-  cmd->callback([&run, o] { run = [o] { runRender(*o); }; });
+  cmd->callback([&run, cmd, o] { run = [cmd, o] { runRender(*cmd, *o); }; });
 }
 
 }  // namespace rad

@@ -13,14 +13,9 @@
 
 namespace rad {
 
-// What a method's integrator is built from.
-// Render's solve and gather defaults (`solve` uses 1500 elements and 1024 rays): the final gather
-// reads the solution only at secondary hits and averages it over the hemisphere, so a coarser,
-// cheaper solve serves an image as well; one shadow and one gather ray per pixel sample, which the
-// sampler stratifies across the pixel's samples. Measured on the Cornell box by
-// bench/render_error_vs_time.py --solve-sizes (README, "Images").
-constexpr int kRenderElements = 500;
-constexpr int kRenderRaysPerElement = 256;
+// Render's gather default: one shadow and one gather ray per pixel sample, which the sampler
+// stratifies across the pixel's samples. (The solve takes `solve`'s defaults, so that a render can
+// reuse what `solve` wrote.)
 constexpr int kRenderGather = 1;
 
 // What a method's integrator is built from.

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <optional>
 
-#include "radiosity/app/saved_solution.h"
 #include "radiosity/core/log.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"
@@ -16,8 +15,8 @@ double since(Clock::time_point t) {
 }
 }  // namespace
 
-RenderWorld::RenderWorld(SolveOptions solve, const std::string& cameraFile, bool reuseSavedSolution)
-    : solve_(std::move(solve)), reuseSavedSolution_(reuseSavedSolution) {
+RenderWorld::RenderWorld(SolveOptions solve, const std::string& cameraFile, SolutionSource source)
+    : solve_(std::move(solve)), source_(std::move(source)) {
   if (!cameraFile.empty()) motionSpec_ = loadMotionSpec(cameraFile);
 }
 
@@ -36,26 +35,19 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
       const auto t = Clock::now();
       Scene scene = loadObjScene(solve_.scenePath);
       requireEmitter(scene);
-      std::string whyNot = "--fresh-solve";
-      std::optional<SolveResult> saved;
-      if (reuseSavedSolution_) saved = loadSavedSolution(solve_.outputDir, scene, solve_, whyNot);
-      if (saved) {
-        solved_ = std::make_unique<SolveResult>(std::move(*saved));
-        reusedSolution_ = true;
-        skip("radiosity solve", "reused the solution saved in " + solve_.outputDir);
-      } else {
-        if (reuseSavedSolution_) logInfo("solving (" + whyNot + ")");
-        solved_ = std::make_unique<SolveResult>(solveScene(std::move(scene), solve_));
-      }
+      solved_ = std::make_unique<SolveResult>(solveOrReuse(std::move(scene), solve_, source_));
+      for (const SkipNote& note : solved_->report.skipped)  // logged by solveOrReuse
+        if (note.what == "radiosity solve") skipped_.push_back(note);
       solveSeconds_ += since(t);
       const auto b = Clock::now();
-      solvedCaster_ = std::make_unique<RayCaster>(*solved_->mesh);
-      solvedView_ = std::make_unique<RenderScene>(solved_->scene, *solved_->mesh, *solvedCaster_);
+      const Solution& solution = solved_->solution;
+      solvedCaster_ = std::make_unique<RayCaster>(*solution.mesh);
+      solvedView_ = std::make_unique<RenderScene>(solution.scene, *solution.mesh, *solvedCaster_);
       bvhSeconds_ += since(b);
     }
     if (!motionSpec_.empty())
       skip("motion blur for --method " + method.name, "only methods that sample time render it");
-    return {solvedView_.get(), &solved_->radiosity};
+    return {solvedView_.get(), &solved_->solution.radiosity};
   }
 
   if (!scene_) {

@@ -5,7 +5,9 @@
 #include <vector>
 
 #include "radiosity/app/render_methods.h"
-#include "radiosity/app/solve_job.h"
+#include "radiosity/pipeline/solution.h"
+#include "radiosity/pipeline/solution_source.h"
+#include "radiosity/pipeline/solve_options.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/render/scene_motion.h"
 
@@ -18,9 +20,9 @@ namespace rad {
 class RenderWorld {
  public:
   // `cameraFile`: the camera JSON the render uses ("" for none); its "shutter"/"motion" are read
-  // (and checked) at once, before any long work. `reuseSavedSolution`: take the solution an
-  // earlier render saved in solve.outputDir when it matches the scene and solve options.
-  RenderWorld(SolveOptions solve, const std::string& cameraFile, bool reuseSavedSolution = false);
+  // (and checked) at once, before any long work. `source`: where a saved solution may come from
+  // (solution_source.h); by default every method that needs one solves.
+  RenderWorld(SolveOptions solve, const std::string& cameraFile, SolutionSource source = {});
   ~RenderWorld();
 
   struct View {
@@ -30,7 +32,7 @@ class RenderWorld {
   View viewFor(const RenderMethod& method);
 
   const SolveResult* solved() const { return solved_.get(); }  // null until a method needs it
-  bool reusedSolution() const { return reusedSolution_; }
+  bool reusedSolution() const { return solved_ && solved_->report.reusedSavedSolution; }
   const MotionSpec& motionSpec() const { return motionSpec_; }
   const std::vector<SkipNote>& skipped() const { return skipped_; }
   double solveSeconds() const { return solveSeconds_; }
@@ -39,7 +41,7 @@ class RenderWorld {
  private:
   void skip(const std::string& what, const std::string& why);
   SolveOptions solve_;
-  bool reuseSavedSolution_ = false, reusedSolution_ = false;
+  SolutionSource source_;
   MotionSpec motionSpec_;
   std::vector<SkipNote> skipped_;
   double solveSeconds_ = 0, bvhSeconds_ = 0;

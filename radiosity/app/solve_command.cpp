@@ -2,9 +2,11 @@
 #include <memory>
 
 #include "radiosity/app/commands.h"
-#include "radiosity/app/solve_job.h"
+#include "radiosity/app/solve_outputs.h"
+#include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 
 namespace rad {
 
@@ -82,6 +84,36 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
       ->default_val(options.receiverPoints);
 }
 
+namespace {
+// The options of addSolveOptions that only the radiosity solve reads.
+const char* const kSolveOnlyOptions[] = {
+    "--solver",       "--rays",           "--max-area",         "--elements",
+    "--tolerance",    "--max-iterations", "--bounces",          "--form-factors",
+    "--patch-area",   "--shadow-rays",    "--refine-threshold", "--min-area",
+    "--max-elements", "--refine-passes",  "--time-limit",       "--receiver-points"};
+}  // namespace
+
+std::set<std::string> givenOptions(const CLI::App& command) {
+  std::set<std::string> given;
+  for (const CLI::Option* option : command.get_options())
+    if (option->count() > 0) given.insert(option->get_name());
+  return given;
+}
+
+void finishSolveOptions(const CLI::App& command, SolveOptions& options,
+                        const std::string& solverName, const std::string& whyNoSolve) {
+  options.solver = parseSolverKind(solverName);
+  validateSolveOptions(options);
+  const std::set<std::string> given = givenOptions(command);
+  if (!whyNoSolve.empty()) {
+    // Only the options every method reads (--seed, --threads) remain.
+    for (const char* name : kSolveOnlyOptions)
+      if (given.count(name)) throw InputError(std::string(name) + " is not used: " + whyNoSolve);
+    return;
+  }
+  checkOptionsApply(options, given);
+}
+
 void registerSolveCommand(CLI::App& app, CommandAction& run) {
   auto options = std::make_shared<SolveOptions>();
   auto solverName = std::make_shared<std::string>("progressive");
@@ -92,9 +124,9 @@ void registerSolveCommand(CLI::App& app, CommandAction& run) {
       ->required();
   addSolveOptions(*solve, *options, *solverName);
   addCommonFlags(*solve);
-  solve->callback([&run, options, solverName] {
-    run = [options, solverName] {
-      options->solver = parseSolverKind(*solverName);
+  solve->callback([&run, solve, options, solverName] {
+    run = [solve, options, solverName] {
+      finishSolveOptions(*solve, *options, *solverName);
       SolveResult result = runSolve(*options);
       throwIfInterrupted();
       {

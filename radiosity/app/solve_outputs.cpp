@@ -1,15 +1,19 @@
 // Writing a finished solve: elements.csv, vertex_colors.ply and summary.json.
+#include "radiosity/app/solve_outputs.h"
+
 #include <chrono>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "meshing/vertex_interpolation.h"
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/log.h"
+#include "radiosity/output/display_radiance.h"
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/output/tone_map.h"
 #include "radiosity/output/vertex_colors_ply.h"
+#include "radiosity/pipeline/saved_solution.h"
 #ifdef RADIOSITY_HAS_VIEWER
 #include "viewer/solution_vtp.h"
 #endif
@@ -22,37 +26,43 @@ constexpr bool kWritesVtp = true;
 constexpr bool kWritesVtp = false;
 #endif
 
-nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& r, double exposure) {
+nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& result,
+                           double exposure) {
   using nlohmann::json;
-  const PatchMesh& mesh = *r.mesh;
+  const Solution& s = result.solution;
+  const SolveReport& r = result.report;
+  const PatchMesh& mesh = *s.mesh;
+  const bool hemisphere = options.formFactors == FormFactorMethod::Hemisphere;
   int emitterElements = 0;
-  for (const Rgb& e : r.problem.emission) emitterElements += e.maxComponent() > 0;
+  for (const Rgb& e : s.problem.emission) emitterElements += e.maxComponent() > 0;
   json skipped = json::array();
   for (const SkipNote& s : r.skipped) skipped.push_back({{"what", s.what}, {"why", s.why}});
   json materials = json::array();
-  for (const Material& m : r.scene.materials) materials.push_back(m.name);
+  for (const Material& m : s.scene.materials) materials.push_back(m.name);
 
   const double rayTime = r.times.formFactors;
   return {
       {"scene",
        {{"file", options.scenePath},
-        {"polygons", r.scene.polygons.size()},
+        {"polygons", s.scene.polygons.size()},
         {"triangles", mesh.inputTriangleCount()},
         {"patches", mesh.patchCount()},
         {"elements", mesh.elementCount()},
         {"vertices", mesh.vertexCount()},
-        {"emitters", r.scene.emitterCount()},
+        {"emitters", s.scene.emitterCount()},
         {"emitter_elements", emitterElements},
         {"materials", materials},
-        {"skipped_degenerate_faces", r.scene.skippedDegenerateFaces},
+        {"skipped_degenerate_faces", s.scene.skippedDegenerateFaces},
         {"total_area", mesh.totalArea()},
         {"max_element_area", r.maxArea},
         {"elements_before_refinement", r.elementsBeforeRefinement},
         {"refinement_passes", r.refinementPasses}}},
       {"form_factors",
-       {{"method", r.formFactorMethod},
+       {{"method", formFactorMethodName(options.formFactors)},
         {"shooters", r.shooters},
-        {"rays_per_element", options.raysPerElement},
+        {"rays_per_element", hemisphere ? json(options.raysPerElement) : json()},
+        {"shadow_rays", hemisphere ? json() : json(options.shadowRays)},
+        {"receiver_points", hemisphere ? json() : json(options.receiverPoints)},
         {"rows_computed", r.rowsComputed},
         {"rays_cast", r.raysCast},
         {"specular_rays", r.specularRays},
@@ -66,8 +76,8 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& r, do
         {"tolerance", options.bounces >= 0 ? 0.0 : options.tolerance},
         {"bounces", options.bounces >= 0 ? nlohmann::json(options.bounces) : nlohmann::json()},
         {"converged", r.converged},
-        {"stopped_by", r.stoppedBy},
-        {"emitted_power", r.problem.emittedPower()}}},
+        {"stopped_by", stopReasonName(r.stoppedBy)},
+        {"emitted_power", s.problem.emittedPower()}}},
       {"threads", r.threads},
       {"time_seconds",
        {{"load", r.times.load},
@@ -89,36 +99,37 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& r, do
 void writeFiles(const SolveOptions& options, SolveResult& result,
                 std::chrono::steady_clock::time_point start) {
   const std::filesystem::path dir(options.outputDir);
-  const PatchMesh& mesh = *result.mesh;
+  const Solution& solution = result.solution;
+  const PatchMesh& mesh = *solution.mesh;
 
   AtomicFile csv((dir / "elements.csv").string());
-  writeElementsCsv(csv.stream(), mesh, result.radiosity);
+  writeElementsCsv(csv.stream(), mesh, solution.radiosity);
 
   const VertexInterpolation interpolation(mesh);
   const std::vector<Rgb> vertexRadiance =
-      interpolateVertexRadiance(interpolation, result.radiosity, result.pointRadiosity);
-  std::vector<Rgb> elementRadiance(result.radiosity.size());
-  for (size_t e = 0; e < elementRadiance.size(); ++e)
-    elementRadiance[e] = result.radiosity[e] / M_PI;
-  const ToneMap toneMap = ToneMap::autoExposure(elementRadiance, result.problem.area);
+      interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
+  const ToneMap toneMap = solutionToneMap(solution.radiosity, solution.problem.area);
   AtomicFile ply((dir / "vertex_colors.ply").string(), /*binary=*/true);
   writeVertexColorsPly(ply.stream(), interpolation, mesh, vertexRadiance, toneMap);
   std::vector<AtomicFile*> files = {&csv, &ply};
 #ifdef RADIOSITY_HAS_VIEWER
   // ParaView-ready solution.vtp (the VTK viewer's format), committed with the others below.
-  std::vector<Rgb> unshot(result.radiosity.size());
-  for (size_t e = 0; e < unshot.size(); ++e) {
-    const Eigen::Vector3d u = mesh.unshot(static_cast<int>(e));
-    unshot[e] = {u.x(), u.y(), u.z()};
-  }
   AtomicFile vtp((dir / "solution.vtp").string(), /*binary=*/true);
-  writeSolutionVtp(vtp.stream(), mesh, result.radiosity, unshot, toneMap, options.scenePath);
+  writeSolutionVtp(vtp.stream(), mesh, solution.radiosity, solution.unshot, toneMap,
+                   options.scenePath);
   files.push_back(&vtp);
 #endif
+  // What render, bake and view --solution need to reuse elements.csv.
+  std::unique_ptr<AtomicFile> saved;
+  if (solutionIsReusable(options)) {
+    saved = std::make_unique<AtomicFile>((dir / kSolutionJson).string());
+    writeSavedSolutionJson(*saved, "elements.csv", result, options);
+    files.push_back(saved.get());
+  }
 
-  result.times.output =
+  result.report.times.output =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.times.total += result.times.output;
+  result.report.times.total += result.report.times.output;
   AtomicFile summary((dir / "summary.json").string());
   summary.stream() << summaryJson(options, result, toneMap.exposure).dump(2) << "\n";
 
@@ -143,6 +154,7 @@ void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
     throw;
   }
   logInfo("wrote the solution files (elements.csv, vertex_colors.ply, summary.json" +
+          std::string(solutionIsReusable(options) ? ", solution.json" : "") +
           std::string(kWritesVtp ? ", solution.vtp" : "") + ") to " + options.outputDir);
 }
 

@@ -1,5 +1,6 @@
 // `radiosity view SCENE.obj | DIR`: the solution in a VTK window (or a PNG with --screenshot),
 // and the solver behind it, which the viewer's keys step live.
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -8,11 +9,13 @@
 #include "radiosity/app/commands.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
-#include "radiosity/formfactors/analytic_patch_shots.h"
-#include "radiosity/formfactors/form_factor_cache.h"
-#include "radiosity/formfactors/hemisphere_form_factors.h"
+#include "radiosity/output/display_radiance.h"
+#include "radiosity/pipeline/form_factor_stage.h"
+#include "radiosity/pipeline/iteration.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/solvers/gathering_solvers.h"
 #include "radiosity/solvers/progressive_solver.h"
+#include "radiosity/solvers/solver_factory.h"
 #include "radiosity/visibility/ray_caster.h"
 #include "viewer/solution_polydata.h"
 #include "viewer/solution_viewer.h"
@@ -21,38 +24,20 @@
 namespace rad {
 namespace {
 
-// The same ray budget per row as solveScene gives (emitters get rays by their share of the
-// power), so the rows drawn and stepped here are the rows the solve used.
-// The solver of a finished solve, rebuilt over its mesh and problem (as solveScene builds it) so
-// the viewer can replay and step it. Rows are cached, so restarting costs no rays.
+// The solver of a finished solve, built again over its mesh and problem by the same stages
+// solveScene uses, so the viewer can replay and step it. Rows are cached, so restarting costs no
+// rays.
 class ViewerSolve final : public LiveSolution {
  public:
-  ViewerSolve(const SolveResult& result, const SolveOptions& options)
-      : result_(result),
-        options_(options),
-        rays_(*result.mesh),
-        method_(*result.mesh, rays_,
-                {options.raysPerElement, options.seed, emitterRayMultipliers(result.problem),
-                 result.scene.hasSpecular() ? specularSurfaces(result.scene, *result.mesh)
-                                            : std::vector<SpecularSurface>()}),
-        cache_(method_) {
-    const int n = result.mesh->elementCount();
-    tolerance_ = options.tolerance;
-    // The budgets solveScene uses by default.
-    maxIterations_ =
-        options.maxIterations > 0 ? options.maxIterations : defaultMaxIterations(options.solver, n);
-    if (options.solver == SolverKind::Jacobi && options.bounces >= 0)
-      maxIterations_ = options.bounces, tolerance_ = 0;
-    if (options.formFactors == FormFactorMethod::Analytic)
-      analytic_ = std::make_unique<AnalyticPatchShots>(
-          *result.mesh, rays_,
-          AnalyticOptions{options.receiverPoints, options.shadowRays, options.seed});
-    if (options.solver != SolverKind::Progressive) {
-      gather_ =
-          analytic_ ? analytic_->gatheringMatrix(nullptr) : gatherMatrix(result.problem, cache_);
-      if (options.solver == SolverKind::Southwell)
-        columns_ = std::make_unique<GatheringColumns>(result.problem, gather_);
-    }
+  ViewerSolve(const Solution& solution, const SolveOptions& options)
+      : solution_(solution),
+        kind_(options.solver),
+        rays_(*solution.mesh),
+        formFactors_(solution.scene, *solution.mesh, rays_, solution.problem, options),
+        limits_(iterationLimits(options, solution.mesh->elementCount(),
+                                std::chrono::steady_clock::now())) {
+    limits_.timeLimit = 0;  // the viewer steps on request, without a clock
+    if (needsGatheringMatrix(kind_)) gather_ = formFactors_.gatheringMatrix();
     restart();
   }
 
@@ -62,7 +47,8 @@ class ViewerSolve final : public LiveSolution {
   }
   std::vector<Rgb> unshot() const override {
     const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver_.get());
-    return shooting ? shooting->unshotPowerOfElements() : std::vector<Rgb>(result_.problem.size());
+    return shooting ? shooting->unshotPowerOfElements()
+                    : std::vector<Rgb>(solution_.problem.size());
   }
   void step() override {
     if (converged()) return;
@@ -70,27 +56,12 @@ class ViewerSolve final : public LiveSolution {
     history_.push_back(solver_->progress());
   }
   void restart() override {
-    const RadiosityProblem& p = result_.problem;
-    switch (options_.solver) {
-      case SolverKind::Progressive:
-        solver_ = std::make_unique<ProgressiveSolver>(
-            p, analytic_ ? static_cast<ShotRows&>(*analytic_) : cache_);
-        break;
-      case SolverKind::Southwell:
-        solver_ = std::make_unique<ProgressiveSolver>(p, *columns_);
-        static_cast<ProgressiveSolver&>(*solver_).setName("southwell");
-        break;
-      case SolverKind::Jacobi:
-        solver_ = std::make_unique<JacobiSolver>(p, gather_);
-        break;
-      case SolverKind::GaussSeidel:
-        solver_ = std::make_unique<GaussSeidelSolver>(p, gather_);
-        break;
-    }
+    solver_ = makeSolver(kind_, solution_.problem, formFactors_.shots(), [&] { return gather_; });
     history_ = {solver_->progress()};
   }
   bool converged() const override {
-    return solver_->iterations() >= maxIterations_ || solver_->progress() <= tolerance_;
+    return solver_->iterations() >= limits_.maxIterations ||
+           solver_->progress() <= limits_.tolerance;
   }
   int iterations() const override { return solver_->iterations(); }
   const std::vector<double>& history() const override { return history_; }
@@ -99,34 +70,30 @@ class ViewerSolve final : public LiveSolution {
   int lastShooter() const override {
     // Shooters are elements only for hemisphere rows; analytic shooters are whole patches.
     const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver_.get());
-    return shooting && !analytic_ ? shooting->lastShooter() : -1;
+    return shooting && !formFactors_.analytic() ? shooting->lastShooter() : -1;
   }
   // The element's hemisphere row (with the analytic method, the rays the hemisphere method would
   // cast: that method uses shadow rays to patches instead).
   std::vector<RaySegment> rowRays(int element) const override {
-    const double escapeLength = 0.25 * result_.mesh->boundsDiagonal();
+    const double escapeLength = 0.25 * solution_.mesh->boundsDiagonal();
     std::vector<RaySegment> out;
-    for (const RowRay& r : method_.traceRow(element)) {
+    for (const RowRay& r : formFactors_.hemisphere().traceRow(element)) {
       const double length = std::isfinite(r.distance) ? r.distance : escapeLength;
       out.push_back({r.origin, r.origin + length * r.direction, r.target >= 0});
     }
     return out;
   }
-  double tolerance() const { return tolerance_; }
+  double tolerance() const { return limits_.tolerance; }
 
  private:
-  const SolveResult& result_;
-  SolveOptions options_;
+  const Solution& solution_;
+  SolverKind kind_;
   RayCaster rays_;
-  HemisphereFormFactors method_;
-  FormFactorCache cache_;
-  std::unique_ptr<AnalyticPatchShots> analytic_;
+  FormFactorStage formFactors_;
+  IterationLimits limits_;
   SparseRows gather_;
-  std::unique_ptr<GatheringColumns> columns_;
   std::unique_ptr<Solver> solver_;
   std::vector<double> history_;
-  int maxIterations_ = 0;
-  double tolerance_ = 0;
 };
 
 struct ViewArgs {
@@ -158,7 +125,8 @@ void requireDisplay(bool screenshot) {
                              "--screenshot FILE.png under `xvfb-run -a`");
 }
 
-void runView(const ViewArgs& args, SolveOptions options) {
+void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command,
+             const std::string& solverName) {
   ViewerOptions view;
   parseSize(args.size, view);
   view.scalar = parseDisplayScalar(args.scalar);
@@ -199,21 +167,15 @@ void runView(const ViewArgs& args, SolveOptions options) {
   }
 
   options.scenePath = args.input;
-  SolveResult result = runSolve(options);
+  finishSolveOptions(command, options, solverName);
+  const SolveResult result = runSolve(options);
+  const Solution& solution = result.solution;
   cameraFor(options.scenePath);
-  std::vector<Rgb> radiance(result.radiosity.size());
-  for (size_t e = 0; e < radiance.size(); ++e) radiance[e] = result.radiosity[e] / M_PI;
-  const ToneMap toneMap =
-      ToneMap::autoExposure(radiance, result.problem.area);  // as solve's outputs
-  std::vector<Rgb> unshot(result.radiosity.size());
-  for (int e = 0; e < result.mesh->elementCount(); ++e) {
-    const Eigen::Vector3d u = result.mesh->unshot(e);
-    unshot[e] = {u.x(), u.y(), u.z()};
-  }
+  const ToneMap toneMap = solutionToneMap(solution.radiosity, solution.problem.area);
   vtkSmartPointer<vtkPolyData> data =
-      makeSolutionPolyData(*result.mesh, result.radiosity, unshot, toneMap);
+      makeSolutionPolyData(*solution.mesh, solution.radiosity, solution.unshot, toneMap);
 
-  ViewerSolve live(result, options);
+  ViewerSolve live(solution, options);
   view.tolerance = live.tolerance();
   // Replay the solve to draw its convergence curve (rows are recomputed once, then cached):
   // the result is the same solution, deterministic for the seed.
@@ -258,11 +220,8 @@ void registerViewCommand(CLI::App& app, CommandAction& run) {
       ->check(CLI::NonNegativeNumber);
   addSolveOptions(*view, *options, *solverName);
   addCommonFlags(*view);
-  view->callback([&run, options, solverName, args] {
-    run = [options, solverName, args] {
-      options->solver = parseSolverKind(*solverName);
-      runView(*args, *options);
-    };
+  view->callback([&run, view, options, solverName, args] {
+    run = [view, options, solverName, args] { runView(*args, *options, *view, *solverName); };
   });
 }
 

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cstdio>
 #include <mutex>
+#include <sstream>
 
 namespace rad {
 namespace {
@@ -24,6 +25,13 @@ void logInfo(const std::string& m) {
 void logWarning(const std::string& m) { emit("warning: ", m); }
 void logDebug(const std::string& m) {
   if (g_level >= LogLevel::Debug) emit("debug: ", m);
+}
+
+std::string formatNumber(double value) {
+  std::ostringstream s;
+  s.precision(3);
+  s << value;
+  return s.str();
 }
 
 }  // namespace rad

@@ -13,4 +13,7 @@ void logInfo(const std::string& message);
 void logWarning(const std::string& message);
 void logDebug(const std::string& message);
 
+// A number for a message: 3 significant digits ("0.0123", "1.5e+06").
+std::string formatNumber(double value);
+
 }  // namespace rad

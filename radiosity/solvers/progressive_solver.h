@@ -7,7 +7,7 @@
 #include "radiosity/formfactors/shot_rows.h"
 #include "radiosity/solvers/max_power_tree.h"
 #include "radiosity/solvers/radiosity_problem.h"
-#include "radiosity/solvers/solver.h"
+#include "radiosity/solvers/refinable_solver.h"
 
 namespace rad {
 
@@ -20,7 +20,7 @@ namespace rad {
 // Gauss–Seidel solve). With hemisphere rows, the estimated F is not exactly reciprocal, so
 // shooting converges to B_j = E_j + rho_j sum_i (A_i F_ij / A_j) B_i: the gathering solution up
 // to the form factors' noise. The ambient term estimates the light not yet shot, for display.
-class ProgressiveSolver : public Solver {
+class ProgressiveSolver : public RefinableSolver {
  public:
   ProgressiveSolver(const RadiosityProblem& problem, ShotRows& shots);
   std::string name() const override { return name_; }
@@ -30,7 +30,7 @@ class ProgressiveSolver : public Solver {
   // B at each element's 3 receiver points (in the order of the rows' `points`), whose mean is
   // solution(): where the rows resolve their receivers, a linear field over each element; where
   // they do not, the element's value three times.
-  const std::vector<std::array<Rgb, 3>>& pointSolution() const { return pointSolution_; }
+  const std::vector<std::array<Rgb, 3>>& pointSolution() const override { return pointSolution_; }
   int iterations() const override { return shotCount_; }
   std::string progressMeasure() const override { return "unshot power / emitted power"; }
 
@@ -48,9 +48,9 @@ class ProgressiveSolver : public Solver {
   // shot in total: exactly what it would hold had it existed from the start. Unshot power stays
   // with the shooters, so shooting goes on where it was.
   // elementToShooter gives the form factor at each of the element's 3 receiver points.
-  void elementsChanged(
-      const std::vector<int>& changed,
-      const std::function<std::array<double, 3>(int element, int shooter)>& elementToShooter);
+  void elementsChanged(const std::vector<int>& changed,
+                       const std::function<std::array<double, 3>(int element, int shooter)>&
+                           elementToShooter) override;
   void setName(std::string name) { name_ = std::move(name); }
 
  private:

@@ -14,9 +14,10 @@
 
 #include "meshing/mesh_uv_layout.h"
 #include "meshing/patch_mesh.h"
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
+#include "radiosity/pipeline/resource_limits.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/scene/lightmap_uv_check.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"

@@ -3,7 +3,7 @@
 #include <memory>
 #include <string>
 
-#include "radiosity/app/solve_job.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/obj_loader.h"
 
@@ -19,8 +19,9 @@ struct SolvedScene {
 inline std::unique_ptr<SolvedScene> solveForRender(const std::string& path, SolveOptions options) {
   auto s = std::make_unique<SolvedScene>();
   s->solved = solveScene(loadObjScene(path), options);
-  s->caster = std::make_unique<RayCaster>(*s->solved.mesh);
-  s->view = std::make_unique<RenderScene>(s->solved.scene, *s->solved.mesh, *s->caster);
+  s->caster = std::make_unique<RayCaster>(*s->solved.solution.mesh);
+  s->view =
+      std::make_unique<RenderScene>(s->solved.solution.scene, *s->solved.solution.mesh, *s->caster);
   return s;
 }
 

@@ -51,7 +51,7 @@ TEST(RenderCornell, FinalGatherAgreesWithPathTracer) {
 
   const PairedRender path = renderPair(camera, PathTracer(*s->view), 128, 11);
   const PairedRender gather =
-      renderPair(camera, FinalGather(*s->view, s->solved.radiosity, {16}), 16, 12);
+      renderPair(camera, FinalGather(*s->view, s->solved.solution.radiosity, {16}), 16, 12);
 
   double diff2 = 0, ref2 = 0, noise2 = 0;
   Rgb meanPath, meanGather, varMeanPath, varMeanGather;

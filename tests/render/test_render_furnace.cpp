@@ -61,7 +61,7 @@ SolveOptions furnaceSolve() {
 TEST(RenderFurnace, FinalGatherSeesKeOverOneMinusRhoEverywhere) {
   auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
                                    furnaceSolve());
-  const FinalGather gather(*s->view, s->solved.radiosity, {16});
+  const FinalGather gather(*s->view, s->solved.solution.radiosity, {16});
   RenderSettings settings;
   settings.samplesPerPixel = 16;
   settings.showProgress = false;
@@ -80,7 +80,7 @@ TEST(RenderFurnace, FinalGatherWithFewerShadowRaysStaysUnbiased) {
                                    furnaceSolve());
   for (const int lightRays : {1, 4}) {
     SCOPED_TRACE("light rays " + std::to_string(lightRays));
-    const FinalGather gather(*s->view, s->solved.radiosity, {16, lightRays});
+    const FinalGather gather(*s->view, s->solved.solution.radiosity, {16, lightRays});
     RenderSettings settings;
     settings.samplesPerPixel = 256;
     settings.showProgress = false;
@@ -94,7 +94,7 @@ TEST(RenderFurnace, FinalGatherWithFewerShadowRaysStaysUnbiased) {
 TEST(RenderFurnace, InterpolatedRadiosityIsExactWithoutNoise) {
   auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
                                    furnaceSolve());
-  const FinalGather preview(*s->view, s->solved.radiosity, {0});
+  const FinalGather preview(*s->view, s->solved.solution.radiosity, {0});
   RenderSettings settings;
   settings.samplesPerPixel = 2;
   settings.showProgress = false;

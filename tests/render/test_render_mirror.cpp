@@ -100,13 +100,15 @@ class MirrorRoom : public ::testing::Test {
 testing::SolvedScene* MirrorRoom::scene_ = nullptr;
 
 TEST_F(MirrorRoom, InterpolatedRadiosityInTheMirror) {
-  expectMirrorShowsReflectedRadiance(FinalGather(*scene_->view, scene_->solved.radiosity, {0}),
-                                     scene_->caster->surfaceOffset(), "gather 0");
+  expectMirrorShowsReflectedRadiance(
+      FinalGather(*scene_->view, scene_->solved.solution.radiosity, {0}),
+      scene_->caster->surfaceOffset(), "gather 0");
 }
 
 TEST_F(MirrorRoom, FinalGatherInTheMirror) {
-  expectMirrorShowsReflectedRadiance(FinalGather(*scene_->view, scene_->solved.radiosity, {8}),
-                                     scene_->caster->surfaceOffset(), "gather 8");
+  expectMirrorShowsReflectedRadiance(
+      FinalGather(*scene_->view, scene_->solved.solution.radiosity, {8}),
+      scene_->caster->surfaceOffset(), "gather 8");
 }
 
 TEST_F(MirrorRoom, PathTracerInTheMirror) {

@@ -4,8 +4,8 @@
 
 #include <limits>
 
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/pipeline/resource_limits.h"
 
 namespace rad {
 namespace {

@@ -5,9 +5,9 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
 #include "radiosity/formfactors/analytic_patch_shots.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/solvers/progressive_solver.h"
 #include "radiosity/visibility/ray_caster.h"
@@ -41,9 +41,9 @@ bool strictlyInside(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Ei
 }
 
 TEST_F(AdaptiveCornell, RefinedMeshIsConformingAndKeepsTheArea) {
-  const PatchMesh& mesh = *result_->mesh;
-  ASSERT_GT(result_->refinementPasses, 0);
-  ASSERT_GT(mesh.elementCount(), result_->elementsBeforeRefinement);
+  const PatchMesh& mesh = *result_->solution.mesh;
+  ASSERT_GT(result_->report.refinementPasses, 0);
+  ASSERT_GT(mesh.elementCount(), result_->report.elementsBeforeRefinement);
   const TriMesh& m = mesh.mesh();
   for (auto e : m.edges()) {
     const int faces =
@@ -78,7 +78,7 @@ TEST_F(AdaptiveCornell, RefinedMeshIsConformingAndKeepsTheArea) {
         ASSERT_FALSE(strictlyInside(mesh.position(v), c[k], c[(k + 1) % 3])) << "T-vertex " << v;
     }
   }
-  const Scene& scene = result_->scene;
+  const Scene& scene = result_->solution.scene;
   const PatchMesh input = PatchMesh(scene.positions, [&] {
     std::vector<PatchPolygon> p;
     for (const auto& polygon : scene.polygons) p.push_back({polygon.vertices, polygon.material});
@@ -101,8 +101,8 @@ double density(const PatchMesh& mesh, Where where) {
 }
 
 TEST_F(AdaptiveCornell, ElementsGoToShadowBoundariesNotToUniformlyLitWalls) {
-  const PatchMesh& mesh = *result_->mesh;
-  const double uniform = result_->elementsBeforeRefinement / mesh.totalArea();
+  const PatchMesh& mesh = *result_->solution.mesh;
+  const double uniform = result_->report.elementsBeforeRefinement / mesh.totalArea();
   // A band on the floor around the short block's footprint (x 0.08–0.29, z 0.07–0.27): its
   // contact shadow and penumbra.
   const double band = density(mesh, [&](int e, const Eigen::Vector3d& c) {
@@ -121,37 +121,37 @@ TEST_F(AdaptiveCornell, ElementsGoToShadowBoundariesNotToUniformlyLitWalls) {
 
 TEST_F(AdaptiveCornell, ContinuedSolveEqualsAFreshSolveOnTheRefinedMesh) {
   // Same mesh, same shooters, same deterministic form factors: only the history differs.
-  const PatchMesh& mesh = *result_->mesh;
+  const PatchMesh& mesh = *result_->solution.mesh;
   RayCaster rays(mesh);
   AnalyticPatchShots shots(mesh, rays, {3, 16, 1});
-  ProgressiveSolver fresh(result_->problem, shots);
+  ProgressiveSolver fresh(result_->solution.problem, shots);
   while (fresh.progress() > 1e-5) fresh.step();
   std::vector<Rgb> difference(mesh.elementCount());
   for (int e = 0; e < mesh.elementCount(); ++e)
-    difference[e] = fresh.solution()[e] - result_->radiosity[e];
+    difference[e] = fresh.solution()[e] - result_->solution.radiosity[e];
   // Both stopped with at most 1e-5 of the power unshot; what that can still change is
   // rho/(1 − rho) of it, below 3e-5 for rho <= 0.725.
-  EXPECT_LT(relativeToEmission(result_->problem, difference), 1e-4);
+  EXPECT_LT(relativeToEmission(result_->solution.problem, difference), 1e-4);
   // The same for the values at the receiver points, which the refinement carried over and
   // re-gathered for the changed elements.
-  ASSERT_EQ(result_->pointRadiosity.size(), static_cast<size_t>(mesh.elementCount()));
+  ASSERT_EQ(result_->solution.pointRadiosity.size(), static_cast<size_t>(mesh.elementCount()));
   for (int k = 0; k < 3; ++k) {
     for (int e = 0; e < mesh.elementCount(); ++e)
-      difference[e] = fresh.pointSolution()[e][k] - result_->pointRadiosity[e][k];
-    EXPECT_LT(relativeToEmission(result_->problem, difference), 1e-4) << "point " << k;
+      difference[e] = fresh.pointSolution()[e][k] - result_->solution.pointRadiosity[e][k];
+    EXPECT_LT(relativeToEmission(result_->solution.problem, difference), 1e-4) << "point " << k;
   }
 }
 
 TEST_F(AdaptiveCornell, ReceiverPointValuesAverageToTheElementValues) {
   // Each element's value is the mean of its point factors' contributions; the points are kept in
   // single precision, so the means agree to about 1e-6 of the value.
-  const PatchMesh& mesh = *result_->mesh;
-  ASSERT_EQ(result_->pointRadiosity.size(), static_cast<size_t>(mesh.elementCount()));
+  const PatchMesh& mesh = *result_->solution.mesh;
+  ASSERT_EQ(result_->solution.pointRadiosity.size(), static_cast<size_t>(mesh.elementCount()));
   bool someVary = false;
   for (int e = 0; e < mesh.elementCount(); ++e) {
-    const auto& p = result_->pointRadiosity[e];
+    const auto& p = result_->solution.pointRadiosity[e];
     const Rgb mean = (p[0] + p[1] + p[2]) / 3.0;
-    const Rgb& b = result_->radiosity[e];
+    const Rgb& b = result_->solution.radiosity[e];
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], b[c], 1e-5 * b[c] + 1e-12) << "element " << e;
     someVary |= std::fabs(p[0].r - p[1].r) > 1e-3 * b.r;
   }

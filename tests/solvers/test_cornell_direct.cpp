@@ -5,7 +5,7 @@
 #include <cmath>
 #include <memory>
 
-#include "radiosity/app/solve_job.h"
+#include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 #include "radiosity/solvers/gathering_solvers.h"

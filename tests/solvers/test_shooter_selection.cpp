@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "radiosity/app/solve_job.h"
 #include "radiosity/formfactors/form_factor_cache.h"
+#include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 #include "radiosity/solvers/max_power_tree.h"

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 #include "tests/stress/stress_scenes.h"
 
 namespace rad {
@@ -18,12 +18,14 @@ namespace {
 constexpr double kRho = 0.6;
 
 void expectFinite(const SolveResult& result) {
-  for (int e = 0; e < static_cast<int>(result.radiosity.size()); ++e)
+  for (int e = 0; e < static_cast<int>(result.solution.radiosity.size()); ++e)
     for (int c = 0; c < 3; ++c) {
-      ASSERT_TRUE(std::isfinite(result.radiosity[e][c])) << "element " << e << " channel " << c;
-      ASSERT_GE(result.radiosity[e][c], result.problem.emission[e][c]) << "element " << e;
+      ASSERT_TRUE(std::isfinite(result.solution.radiosity[e][c]))
+          << "element " << e << " channel " << c;
+      ASSERT_GE(result.solution.radiosity[e][c], result.solution.problem.emission[e][c])
+          << "element " << e;
     }
-  ASSERT_TRUE(std::isfinite(result.finalProgress));
+  ASSERT_TRUE(std::isfinite(result.report.finalProgress));
 }
 
 SolveResult solveHostile(SolveOptions options) {
@@ -37,8 +39,8 @@ SolveResult solveHostile(SolveOptions options) {
 
 TEST(DegenerateGeometry, SceneKeepsEveryStressedFace) {
   const SolveResult result = solveHostile({});
-  EXPECT_EQ(result.scene.skippedDegenerateFaces, 0);
-  EXPECT_EQ(result.scene.polygons.size(), 6u + 3u + 2u + 6u);
+  EXPECT_EQ(result.solution.scene.skippedDegenerateFaces, 0);
+  EXPECT_EQ(result.solution.scene.polygons.size(), 6u + 3u + 2u + 6u);
 }
 
 // Shooting moves power S; receivers get all of it (rows sum to 1) and reflect rho of it, so
@@ -48,17 +50,17 @@ TEST(DegenerateGeometry, ProgressiveShootingIsFiniteAndBalancesEnergy) {
   options.tolerance = 1e-6;
   const SolveResult result = solveHostile(options);
   expectFinite(result);
-  ASSERT_TRUE(result.converged);
-  const RadiosityProblem& p = result.problem;
+  ASSERT_TRUE(result.report.converged);
+  const RadiosityProblem& p = result.solution.problem;
   for (int c = 0; c < 3; ++c) {
     double total = 0, emitted = 0;
     for (int e = 0; e < p.size(); ++e) {
-      total += p.area[e] * result.radiosity[e][c];
+      total += p.area[e] * result.solution.radiosity[e][c];
       emitted += p.area[e] * p.emission[e][c];
     }
     const double balance = total * (1 - kRho) / emitted;
     std::cout << "channel " << c << ": sum A B (1 − rho) / P = " << balance << ", unshot fraction "
-              << result.finalProgress << "\n";
+              << result.report.finalProgress << "\n";
     // The deficit is rho × the unshot fraction (at most the tolerance), nothing else.
     EXPECT_LE(balance, 1 + 1e-9);
     EXPECT_GE(balance, 1 - kRho * options.tolerance - 1e-9);
@@ -71,7 +73,7 @@ TEST(DegenerateGeometry, GaussSeidelIsFiniteAndConverges) {
   options.tolerance = 1e-8;
   const SolveResult result = solveHostile(options);
   expectFinite(result);
-  EXPECT_TRUE(result.converged) << "residual " << result.finalProgress;
+  EXPECT_TRUE(result.report.converged) << "residual " << result.report.finalProgress;
 }
 
 TEST(DegenerateGeometry, AnalyticFormFactorsAreFinite) {
@@ -79,7 +81,7 @@ TEST(DegenerateGeometry, AnalyticFormFactorsAreFinite) {
   options.formFactors = FormFactorMethod::Analytic;
   const SolveResult result = solveHostile(options);
   expectFinite(result);
-  EXPECT_TRUE(result.converged) << "unshot fraction " << result.finalProgress;
+  EXPECT_TRUE(result.report.converged) << "unshot fraction " << result.report.finalProgress;
 }
 
 }  // namespace

@@ -9,8 +9,9 @@
 #include <fstream>
 #include <iterator>
 
-#include "radiosity/app/solve_job.h"
+#include "radiosity/app/solve_outputs.h"
 #include "radiosity/core/log.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 
 namespace rad {
 namespace {
@@ -52,7 +53,7 @@ TEST_P(Determinism, SameSeedAndThreadsGiveIdenticalBits) {
   for (int run = 0; run < 2; ++run) {
     options.outputDir = (base / std::to_string(run)).string();
     SolveResult result = runSolve(options);
-    radiosity[run] = result.radiosity;
+    radiosity[run] = result.solution.radiosity;
     writeSolveOutputs(options, result);
     files[run][0] = readFile(fs::path(options.outputDir) / "elements.csv");
     files[run][1] = readFile(fs::path(options.outputDir) / "vertex_colors.ply");

@@ -8,10 +8,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
 #include "radiosity/formfactors/analytic_patch_shots.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
+#include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 #include "radiosity/visibility/ray_caster.h"

@@ -13,8 +13,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
+#include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/scene/obj_loader.h"
 
 namespace rad {
@@ -31,10 +31,11 @@ SolveOptions smallOptions(uint64_t seed) {
 
 // Area-weighted mean radiosity (luminance) of each patch.
 std::vector<double> patchMeans(const SolveResult& r) {
-  std::vector<double> sum(r.mesh->patchCount(), 0), area(r.mesh->patchCount(), 0);
-  for (int e = 0; e < r.mesh->elementCount(); ++e) {
-    sum[r.mesh->patch(e)] += r.problem.area[e] * r.radiosity[e].luminance();
-    area[r.mesh->patch(e)] += r.problem.area[e];
+  std::vector<double> sum(r.solution.mesh->patchCount(), 0), area(r.solution.mesh->patchCount(), 0);
+  for (int e = 0; e < r.solution.mesh->elementCount(); ++e) {
+    sum[r.solution.mesh->patch(e)] +=
+        r.solution.problem.area[e] * r.solution.radiosity[e].luminance();
+    area[r.solution.mesh->patch(e)] += r.solution.problem.area[e];
   }
   for (size_t p = 0; p < sum.size(); ++p) sum[p] /= area[p];
   return sum;
@@ -44,8 +45,9 @@ std::vector<double> patchMeans(const SolveResult& r) {
 double relativeRms(const SolveResult& a, const SolveResult& reference) {
   const std::vector<double> x = patchMeans(a), y = patchMeans(reference);
   std::vector<char> emits(y.size(), 0);
-  for (int e = 0; e < reference.mesh->elementCount(); ++e)
-    if (reference.problem.emission[e].maxComponent() > 0) emits[reference.mesh->patch(e)] = 1;
+  for (int e = 0; e < reference.solution.mesh->elementCount(); ++e)
+    if (reference.solution.problem.emission[e].maxComponent() > 0)
+      emits[reference.solution.mesh->patch(e)] = 1;
   double num = 0, den = 0;
   for (size_t p = 0; p < y.size(); ++p)
     if (!emits[p]) {
@@ -73,8 +75,8 @@ class ScaleInvariance : public ::testing::Test {
     Scene moved = *scene_;
     for (Eigen::Vector3d& p : moved.positions) p = p * scale + offset;
     const SolveResult result = solveScene(moved, smallOptions(1));
-    ASSERT_EQ(result.mesh->patchCount(), reference_->mesh->patchCount());
-    for (const Rgb& b : result.radiosity)
+    ASSERT_EQ(result.solution.mesh->patchCount(), reference_->solution.mesh->patchCount());
+    for (const Rgb& b : result.solution.radiosity)
       for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(b[c]));
     const double d = relativeRms(result, *reference_);
     std::cout << "scale " << scale << ", offset " << offset.norm() << ": relative RMS difference "
@@ -112,8 +114,8 @@ TEST_F(ScaleInvariance, MeshingDoesNotDependOnScale) {
   Scene scaled = *scene_;
   for (Eigen::Vector3d& p : scaled.positions) p *= 1e-3;
   const SolveResult result = solveScene(scaled, smallOptions(1));
-  const PatchMesh& a = *reference_->mesh;
-  const PatchMesh& b = *result.mesh;
+  const PatchMesh& a = *reference_->solution.mesh;
+  const PatchMesh& b = *result.solution.mesh;
   ASSERT_EQ(a.elementCount(), b.elementCount());
   int different = 0;
   for (int e = 0; e < a.elementCount(); ++e) {

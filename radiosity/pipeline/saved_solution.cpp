@@ -1,4 +1,4 @@
-#include "radiosity/app/saved_solution.h"
+#include "radiosity/pipeline/saved_solution.h"
 
 #include <cmath>
 #include <cstdint>
@@ -11,7 +11,8 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/output/elements_csv.h"
-#include "radiosity/scene/scene_mesh.h"
+#include "radiosity/pipeline/mesh_stage.h"
+#include "radiosity/pipeline/problem_setup.h"
 
 namespace rad {
 namespace {
@@ -48,19 +49,6 @@ class Fingerprint {
   }
   uint64_t hash_ = 0xcbf29ce484222325ull;
 };
-
-// The mesh solveScene() builds before any form factor (uniform meshing only).
-std::unique_ptr<PatchMesh> remesh(const Scene& scene, const SolveOptions& options) {
-  auto mesh = std::make_unique<PatchMesh>(buildPatchMesh(scene));
-  const double maxArea =
-      options.maxArea > 0 ? options.maxArea : mesh->totalArea() / options.targetElements;
-  if (options.formFactors == FormFactorMethod::Analytic) {
-    mesh->subdivideUniform(options.patchArea > 0 ? options.patchArea : 8 * maxArea);
-    mesh->markShooters();
-  }
-  mesh->subdivideUniform(maxArea);
-  return mesh;
-}
 
 std::vector<std::string> splitCsv(const std::string& line) {
   std::vector<std::string> fields;
@@ -129,13 +117,12 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
                                              const SolveOptions& options, std::string& whyNot) {
   const std::filesystem::path base(dir);
   const std::string jsonPath = (base / kSolutionJson).string();
-  const std::string csvPath = (base / kSolutionCsv).string();
   if (!solutionIsReusable(options)) {
     whyNot = options.keepBounceTerms ? "--bounces-separate: the Jacobi terms are not saved"
                                      : "adaptive refinement: the mesh depends on the solve";
     return std::nullopt;
   }
-  if (!std::filesystem::exists(jsonPath) || !std::filesystem::exists(csvPath)) {
+  if (!std::filesystem::exists(jsonPath)) {
     whyNot = "no saved solution in " + dir;
     return std::nullopt;
   }
@@ -157,12 +144,17 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
     whyNot = "the saved solution was made from another scene or other solve options";
     return std::nullopt;
   }
+  const auto csvName = meta.value("elements_file", std::string(kSolutionCsv));
+  if (csvName.empty() || csvName.find('/') != std::string::npos || csvName == "..")
+    throw InputError(jsonPath, 0, "\"elements_file\" must name a file beside solution.json");
+  const std::string csvPath = (base / csvName).string();
 
   SolveResult result;
-  result.mesh = remesh(scene, options);
-  const PatchMesh& mesh = *result.mesh;
+  MeshedScene meshed = meshScene(scene, options);
+  result.solution.mesh = std::move(meshed.mesh);
+  const PatchMesh& mesh = *result.solution.mesh;
   const int count = mesh.elementCount();
-  result.radiosity.assign(count, Rgb());
+  result.solution.radiosity.assign(count, Rgb());
   std::ifstream in(csvPath);
   if (!in) throw InputError(csvPath, 0, "cannot open the saved solution");
   std::string line;
@@ -195,35 +187,41 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
     Rgb b(parseNumber(f[10], csvPath, lineNumber), parseNumber(f[11], csvPath, lineNumber),
           parseNumber(f[12], csvPath, lineNumber));
     if (b.minComponent() < 0) throw InputError(csvPath, lineNumber, "negative radiosity");
-    result.radiosity[element++] = b;
+    result.solution.radiosity[element++] = b;
   }
   if (element != count)
     throw InputError(csvPath, lineNumber,
                      "the saved solution has " + std::to_string(element) +
                          " elements, the re-meshed scene " + std::to_string(count));
-  result.scene = scene;
-  result.solverName = meta.value("solver", std::string("saved")) + " (reused)";
-  result.converged = meta.value("converged", false);
-  result.maxArea =
-      options.maxArea > 0 ? options.maxArea : mesh.totalArea() / options.targetElements;
+  result.solution.scene = scene;
+  result.solution.problem = makeProblem(scene, mesh);
+  result.report.solverName = meta.value("solver", std::string("saved")) + " (reused)";
+  result.report.converged = meta.value("converged", false);
+  result.report.maxArea = meshed.maxArea;
+  result.report.reusedSavedSolution = true;
   return result;
 }
 
 void writeSavedSolution(AtomicFile& csv, AtomicFile& json, const SolveResult& result,
                         const SolveOptions& options) {
-  writeElementsCsv(csv.stream(), *result.mesh, result.radiosity);
+  writeElementsCsv(csv.stream(), *result.solution.mesh, result.solution.radiosity);
+  writeSavedSolutionJson(json, kSolutionCsv, result, options);
+}
+
+void writeSavedSolutionJson(AtomicFile& json, const std::string& elementsFile,
+                            const SolveResult& result, const SolveOptions& options) {
   const nlohmann::json meta = {
       {"format", kFormat},
-      {"fingerprint", solutionFingerprint(result.scene, options)},
+      {"fingerprint", solutionFingerprint(result.solution.scene, options)},
       {"scene", options.scenePath},
-      {"elements", result.mesh->elementCount()},
-      {"solver", result.solverName},
-      {"converged", result.converged},
-      {"rays_per_element", options.raysPerElement},
+      {"elements_file", elementsFile},
+      {"elements", result.solution.mesh->elementCount()},
+      {"solver", result.report.solverName},
+      {"converged", result.report.converged},
       {"seed", options.seed},
-      {"comment",
-       "B per element in solution.csv (W/m^2); radiosity render --out on this directory reuses "
-       "it for the same scene and solve options"},
+      {"comment", "B per element in " + elementsFile +
+                      " (W/m^2); render, bake and view with --solution on this directory (or "
+                      "--out, for render) reuse it for the same scene and solve options"},
   };
   json.stream() << meta.dump(2) << "\n";
 }

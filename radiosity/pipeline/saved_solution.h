@@ -3,15 +3,17 @@
 #include <optional>
 #include <string>
 
-#include "radiosity/app/solve_job.h"
 #include "radiosity/core/atomic_file.h"
+#include "radiosity/pipeline/solution.h"
+#include "radiosity/pipeline/solve_options.h"
 
 namespace rad {
 
-// A radiosity solution that `radiosity render --method radiosity` keeps in its output directory
-// (solution.csv: B per element in the elements.csv format; solution.json: what it was solved
-// from) and reuses when the same scene is rendered again with the same solve options, so that
-// renders from other cameras or with other sample counts skip the solve.
+// A radiosity solution kept in an output directory for later commands: solution.json says what it
+// was solved from (a fingerprint of the scene and the solve options) and names the CSV holding B
+// per element in the elements.csv format: elements.csv itself for `solve`, solution.csv for
+// `render --method radiosity`. render, bake and view reuse it when the scene and the solve
+// options match, so that renders from other cameras or with other sample counts skip the solve.
 //
 // Reuse re-meshes the scene (uniform meshing is deterministic) and reads B back; it needs the
 // fingerprint of the scene's content and of every solve option that shapes the mesh or B to match.
@@ -35,6 +37,9 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
 // commits them with its other outputs).
 void writeSavedSolution(AtomicFile& csv, AtomicFile& json, const SolveResult& result,
                         const SolveOptions& options);
+// Writes only solution.json, naming `elementsFile` (already written beside it) as its CSV.
+void writeSavedSolutionJson(AtomicFile& json, const std::string& elementsFile,
+                            const SolveResult& result, const SolveOptions& options);
 
 inline constexpr const char* kSolutionCsv = "solution.csv";
 inline constexpr const char* kSolutionJson = "solution.json";

@@ -1,0 +1,51 @@
+#include "radiosity/pipeline/problem_setup.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rad {
+
+RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
+  RadiosityProblem problem;
+  const int n = mesh.elementCount();
+  problem.emission.resize(n);
+  problem.reflectance.resize(n);
+  problem.area.resize(n);
+  for (int e = 0; e < n; ++e) {
+    const Material& m = scene.materials[mesh.material(e)];
+    problem.emission[e] = M_PI * m.emission;  // Lambertian emitter: exitance = pi × radiance
+    // Mirrors and glass hold no radiosity: rays pass on through them (extended form factors).
+    problem.reflectance[e] = m.isSpecular() ? Rgb() : m.diffuse;
+    problem.area[e] = mesh.area(e);
+  }
+  return problem;
+}
+
+std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMesh& mesh) {
+  std::vector<SpecularSurface> surfaces(mesh.elementCount());
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const Material& m = scene.materials[mesh.material(e)];
+    if (m.kind == SurfaceKind::Mirror)
+      surfaces[e] = {SpecularSurface::Kind::Mirror, m.specular, Rgb::all(1), 1};
+    if (m.kind == SurfaceKind::Dielectric)
+      surfaces[e] = {SpecularSurface::Kind::Dielectric, Rgb::all(1), m.transmittance, m.ior};
+  }
+  return surfaces;
+}
+
+// A shooter's row decides how evenly its power lands on the receivers. An emitter element shoots
+// a large share of all the light (all of it, at first), so its row gets rays in proportion to
+// that share: with n elements, an element emitting the fraction s of the power gets about s·n
+// times the rays of an average element (at least 1×, at most 64×). A uniform emitter gets 1×.
+std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem) {
+  const double emitted = problem.emittedPower();
+  std::vector<int> multiplier(problem.size(), 1);
+  if (!(emitted > 0)) return multiplier;
+  for (int i = 0; i < problem.size(); ++i) {
+    const double share = problem.area[i] * problem.emission[i].sum() / emitted;
+    multiplier[i] = static_cast<int>(std::clamp(std::round(share * problem.size()), 1.0, 64.0));
+  }
+  return multiplier;
+}
+
+}  // namespace rad

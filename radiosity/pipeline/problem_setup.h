@@ -1,0 +1,23 @@
+#pragma once
+
+#include <vector>
+
+#include "meshing/patch_mesh.h"
+#include "radiosity/formfactors/specular_paths.h"
+#include "radiosity/scene/scene.h"
+#include "radiosity/solvers/radiosity_problem.h"
+
+namespace rad {
+
+// The per-element problem of a meshed scene: E = pi·Ke on emitters, rho = Kd (0 on mirrors
+// and glass, which hold no radiosity).
+RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh);
+
+// Mirror and glass behaviour per element for extended form factors.
+std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMesh& mesh);
+
+// Rays per emitter row relative to an average row: about the element's share of the emitted
+// power times the element count, between 1 and 64.
+std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem);
+
+}  // namespace rad

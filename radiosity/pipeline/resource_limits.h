@@ -1,0 +1,31 @@
+#pragma once
+
+#include <cstdint>
+
+#include "radiosity/pipeline/solve_options.h"
+#include "radiosity/scene/scene.h"
+
+namespace rad {
+
+// Resource limits, decided before the work starts, so absurd options or scenes fail at once
+// with a clear message instead of running out of memory hours later.
+inline constexpr int kMaxRaysPerElement = 1 << 24;  // × 64 for emitter rows still fits an int
+inline constexpr double kMaxElements = 4e6;
+inline constexpr double kMaxCoordinate = 1e15;
+
+// Upper bound on the memory of the form-factor rows a run may store: hemisphere rows hold at
+// most min(rays, elements) entries each; analytic rows (gathering matrix or patch shots) at
+// most elements × shooters entries; about 12 bytes per entry (index and value), 24 for analytic
+// rows that also keep the factor at each of 3 receiver points (receiverPoints 3).
+uint64_t formFactorMemoryEstimate(FormFactorMethod method, int elements, int shooters, int rays,
+                                  int receiverPoints = 1);
+// MemAvailable from /proc/meminfo in bytes; 0 when unknown (the check is then skipped).
+uint64_t availableMemoryBytes();
+// Throws InputError naming the options to change when `needed` exceeds `available` (0: unknown).
+void checkFormFactorMemory(uint64_t needed, uint64_t available, FormFactorMethod method);
+// Throws InputError (naming the file) for scenes too large or too far out to solve: more
+// polygons than the element limit, coordinates beyond kMaxCoordinate. (Faces of more than 255
+// vertices are refused by the OBJ line check.)
+void checkSceneLimits(const Scene& scene);
+
+}  // namespace rad

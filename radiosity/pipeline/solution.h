@@ -1,0 +1,74 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "meshing/patch_mesh.h"
+#include "radiosity/core/rgb.h"
+#include "radiosity/scene/scene.h"
+#include "radiosity/solvers/radiosity_problem.h"
+
+namespace rad {
+
+// What a solve produced that writers, renderers and the viewer read: the scene, its mesh, the
+// per-element problem and the radiosity on it.
+struct Solution {
+  Scene scene;
+  std::unique_ptr<PatchMesh> mesh;
+  RadiosityProblem problem;
+  std::vector<Rgb> radiosity;  // B per element, W/m² (for scenes in metres)
+  // B at each element's 3 Gauss points (analytic factors with 3 receiver points and progressive
+  // shooting; their mean is `radiosity`), or empty: what vertex colours interpolate from.
+  std::vector<std::array<Rgb, 3>> pointRadiosity;
+  // Unshot power per element (W) a shooting solver still held; empty for gathering solvers.
+  std::vector<Rgb> unshot;
+  // With keepBounceTerms: term k = B_k − B_{k−1} = (rho F)^k E of the Jacobi iterates, k ≥ 0.
+  std::vector<std::vector<Rgb>> bounceTerms;
+};
+
+// Why the iterations stopped.
+enum class StopReason { Tolerance, Bounces, IterationLimit, TimeLimit };
+// "tolerance", "bounces", "iteration limit", "time limit" (summary.json's stopped_by).
+std::string stopReasonName(StopReason reason);
+
+// Something the run decided not to do, and why (reported in the log and summary.json).
+struct SkipNote {
+  std::string what, why;
+};
+
+struct StageTimes {
+  double load = 0, mesh = 0, bvh = 0, formFactors = 0, solve = 0, output = 0, total = 0;
+};
+
+// How the solve went: counts, times, the stopping state and the work skipped.
+struct SolveReport {
+  std::string solverName, progressMeasure;
+  int iterations = 0;
+  int refinementPasses = 0;
+  int elementsBeforeRefinement = 0;
+  double finalProgress = 0;  // residual or unshot fraction reached
+  bool converged = false;
+  StopReason stoppedBy = StopReason::Tolerance;
+  double maxArea = 0;
+  int shooters = 0;  // elements (hemisphere) or shooting patches (analytic)
+  int rowsComputed = 0;
+  uint64_t specularRays = 0;  // continuations through mirrors and glass
+  uint64_t raysCast = 0;
+  int threads = 0;
+  bool reusedSavedSolution = false;
+  StageTimes times;
+  std::vector<SkipNote> skipped;
+
+  // Logs "skipped: what (why)" and keeps the note for summary.json.
+  void skip(std::string what, std::string why);
+};
+
+struct SolveResult {
+  Solution solution;
+  SolveReport report;
+};
+
+}  // namespace rad

@@ -1,0 +1,32 @@
+#include "radiosity/pipeline/solution_source.h"
+
+#include <chrono>
+#include <optional>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
+#include "radiosity/pipeline/saved_solution.h"
+#include "radiosity/pipeline/solve_pipeline.h"
+
+namespace rad {
+
+SolveResult solveOrReuse(Scene scene, const SolveOptions& options, const SolutionSource& source) {
+  const auto start = std::chrono::steady_clock::now();
+  std::string whyNot;
+  std::optional<SolveResult> saved;
+  const std::string& dir = source.solutionDir.empty() ? source.reuseDir : source.solutionDir;
+  if (!dir.empty()) saved = loadSavedSolution(dir, scene, options, whyNot);
+  if (!saved && !source.solutionDir.empty())
+    throw InputError(source.solutionDir, 0, "no solution to reuse: " + whyNot);
+  if (!saved) {
+    if (!dir.empty()) logInfo("solving (" + whyNot + ")");
+    return solveScene(std::move(scene), options);
+  }
+  saved->report.skip("radiosity solve",
+                     "reused the solution saved in " + dir + " (same scene and solve options)");
+  saved->report.times.total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(*saved);
+}
+
+}  // namespace rad

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <cstdint>
+#include <set>
+#include <string>
+
+#include "radiosity/solvers/solver_factory.h"
+
+namespace rad {
+
+// How form factors are computed: hemisphere rows per element (ray cast), or analytic
+// element-to-patch factors (point-to-polygon with shadow rays; patches shoot, elements receive).
+enum class FormFactorMethod { Hemisphere, Analytic };
+FormFactorMethod parseFormFactorMethod(const std::string& name);  // throws InputError
+std::string formFactorMethodName(FormFactorMethod method);
+
+// Everything that decides a solve: the mesh, the form factors, the solver and its stopping rule.
+// The same defaults serve every command that solves (solve, render, bake, view, compare).
+struct SolveOptions {
+  std::string scenePath;
+  std::string outputDir;
+  SolverKind solver = SolverKind::Progressive;
+  int raysPerElement = 1024;  // hemisphere: rays per element row
+  double maxArea = 0;         // scene units²; 0: totalArea / targetElements
+  int targetElements = 1500;  // used when maxArea is 0
+  uint64_t seed = 1;
+  int threads = 0;  // 0: all hardware threads
+  double tolerance = 1e-4;
+  int maxIterations = 0;         // 0: a default per solver
+  int bounces = -1;              // Jacobi only: exactly this many bounces (overrides tolerance)
+  bool keepBounceTerms = false;  // Jacobi only: keep each iteration's term (rho F)^k E
+  FormFactorMethod formFactors = FormFactorMethod::Hemisphere;
+  double patchArea = 0;        // analytic: largest shooting patch (scene units²); 0: 8 × max area
+  int shadowRays = 16;         // analytic: visibility rays per receiver point and patch
+  int receiverPoints = 3;      // analytic: 1 (centroid) or 3 (Gauss points) per element
+  double refineThreshold = 0;  // adaptive refinement: relative error of the displayed radiance
+                               // that makes an element a candidate for splitting; 0: off
+  double minArea = 0;    // refinement: smallest element area; 0: total area / max elements / 16
+  int maxElements = 0;   // refinement: element budget; 0: 8 × the uniform mesh's count
+  int refinePasses = 8;  // refinement: solve–refine rounds
+  double timeLimit = 0;  // seconds from the start of the solve; 0: none. Past it the
+                         // iterations stop and the solution so far is kept (not converged)
+};
+
+// Throws InputError for values no solve can use (non-positive counts, NaN, out-of-range).
+void validateSolveOptions(const SolveOptions& options);
+
+// Throws InputError when an option the user gave (`given`: the long names, e.g. "--rays") does
+// nothing with the chosen method or solver, saying why, as pbrt-v4 reports unused parameters.
+void checkOptionsApply(const SolveOptions& options, const std::set<std::string>& given);
+
+}  // namespace rad

@@ -1,0 +1,144 @@
+#include "radiosity/pipeline/solve_pipeline.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "radiosity/core/interrupt.h"
+#include "radiosity/core/log.h"
+#include "radiosity/pipeline/form_factor_stage.h"
+#include "radiosity/pipeline/iteration.h"
+#include "radiosity/pipeline/mesh_stage.h"
+#include "radiosity/pipeline/problem_setup.h"
+#include "radiosity/pipeline/refinement_stage.h"
+#include "radiosity/pipeline/resource_limits.h"
+#include "radiosity/scene/obj_loader.h"
+#include "radiosity/solvers/progressive_solver.h"
+#include "radiosity/solvers/solver_factory.h"
+#include "radiosity/visibility/ray_caster.h"
+
+namespace rad {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// The scene's own limits and what it lets the run skip, before any meshing.
+void checkScene(const Scene& scene, const SolveOptions& options, SolveReport& report) {
+  checkSceneLimits(scene);  // first: a face lost to overflow would read as "no emitter"
+  requireEmitter(scene);
+  if (!scene.hasSpecular())
+    report.skip("specular continuation", "the scene has no mirror or glass material");
+  else if (options.formFactors == FormFactorMethod::Analytic)
+    logWarning(
+        "analytic form factors do not follow mirrors and glass: they absorb light in this "
+        "pass; use --form-factors hemisphere for light carried through them");
+}
+
+void noteBlackElements(const Solution& solution, SolveReport& report) {
+  int black = 0;
+  for (int e = 0; e < solution.mesh->elementCount(); ++e)
+    black += solution.problem.reflectance[e].maxComponent() == 0 &&
+             !solution.scene.materials[solution.mesh->material(e)].isSpecular();
+  if (black > 0)
+    report.skip("re-shooting from " + std::to_string(black) + " black elements",
+                "reflectance 0: they receive light but pass none on");
+}
+
+// What the solver reached: B per element, at the receiver points where they resolve it, and the
+// unshot power a shooting solver still holds.
+void keepSolution(const Solver& solver, bool pointValues, Solution& solution, SolveReport& report) {
+  solution.radiosity = solver.solution();
+  const auto* shooting = dynamic_cast<const ProgressiveSolver*>(&solver);
+  if (shooting && pointValues) solution.pointRadiosity = shooting->pointSolution();
+  if (shooting) solution.unshot = shooting->unshotPowerOfElements();
+  report.solverName = solver.name();
+  report.progressMeasure = solver.progressMeasure();
+  report.iterations = solver.iterations();
+  report.finalProgress = solver.progress();
+}
+
+void warnIfNotConverged(const IterationLimits& limits, const SolveReport& report) {
+  const std::string reached = report.progressMeasure + " " + formatNumber(report.finalProgress);
+  if (report.stoppedBy == StopReason::TimeLimit)
+    logWarning("time limit of " + formatNumber(limits.timeLimit) + " s reached after " +
+               std::to_string(report.iterations) + " iterations: writing the solution so far (" +
+               reached + ", not converged)");
+  else if (report.stoppedBy == StopReason::IterationLimit && limits.bounces < 0)
+    logWarning("stopped after " + std::to_string(report.iterations) + " iterations with " +
+               reached + " above the tolerance " + formatNumber(limits.tolerance));
+}
+
+}  // namespace
+
+SolveResult runSolve(const SolveOptions& options) {
+  const auto start = Clock::now();
+  Scene scene = loadObjScene(options.scenePath);
+  const double loadSeconds = since(start);
+  SolveResult result = solveScene(std::move(scene), options);
+  result.report.times.load = loadSeconds;
+  result.report.times.total += loadSeconds;
+  return result;
+}
+
+SolveResult solveScene(Scene scene, const SolveOptions& options) {
+  validateSolveOptions(options);
+  const auto start = Clock::now();
+  SolveResult result;
+  Solution& solution = result.solution;
+  SolveReport& report = result.report;
+  report.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
+                                        static_cast<size_t>(report.threads));
+  checkScene(scene, options, report);
+  solution.scene = std::move(scene);
+
+  auto t = Clock::now();
+  MeshedScene meshed = meshScene(solution.scene, options);
+  solution.mesh = std::move(meshed.mesh);
+  report.maxArea = meshed.maxArea;
+  report.times.mesh = since(t);
+  logInfo("mesh: " + std::to_string(solution.mesh->patchCount()) + " patches, " +
+          std::to_string(solution.mesh->elementCount()) + " elements (max area " +
+          formatNumber(report.maxArea) + ")");
+  throwIfInterrupted();
+  t = Clock::now();
+  const RayCaster rays(*solution.mesh);
+  report.times.bvh = since(t);
+  solution.problem = makeProblem(solution.scene, *solution.mesh);
+  noteBlackElements(solution, report);
+  FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options);
+  throwIfInterrupted();
+
+  t = Clock::now();
+  const std::unique_ptr<Solver> solver =
+      makeSolver(options.solver, solution.problem, formFactors.shots(),
+                 [&] { return formFactors.gatheringMatrix(); });
+  const IterationLimits limits = iterationLimits(options, solution.mesh->elementCount(), start);
+  const bool keepTerms = options.keepBounceTerms && options.solver == SolverKind::Jacobi;
+  AdaptiveRefinement refinement(options, *solution.mesh);
+  report.elementsBeforeRefinement = solution.mesh->elementCount();
+  for (int pass = 0;; ++pass) {
+    report.stoppedBy = iterate(*solver, limits, keepTerms ? &solution.bounceTerms : nullptr);
+    report.converged = converged(report.stoppedBy);
+    if (!report.converged || !refinement.refine(pass, solution, formFactors, *solver, report))
+      break;
+  }
+  refinement.finish(report);
+  const double solveAndRows = since(t);
+  formFactors.report(report, options.solver);
+  report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
+
+  keepSolution(*solver, formFactors.analytic() && options.receiverPoints == 3, solution, report);
+  warnIfNotConverged(limits, report);
+  report.times.total = since(start);
+  return result;
+}
+
+}  // namespace rad

@@ -1,0 +1,84 @@
+#include "radiosity/solvers/solver_factory.h"
+
+#include <algorithm>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/solvers/gathering_solvers.h"
+#include "radiosity/solvers/progressive_solver.h"
+
+namespace rad {
+namespace {
+
+struct KindName {
+  SolverKind kind;
+  const char* name;
+};
+constexpr KindName kKinds[] = {{SolverKind::Progressive, "progressive"},
+                               {SolverKind::Southwell, "southwell"},
+                               {SolverKind::GaussSeidel, "gauss-seidel"},
+                               {SolverKind::Jacobi, "jacobi"}};
+
+// The columns of the gathering matrix must outlive the shooting that reads them: they are a base
+// constructed before the ProgressiveSolver base that refers to them.
+struct OwnedColumns {
+  GatheringColumns columns;
+};
+class SouthwellSolver final : private OwnedColumns, public ProgressiveSolver {
+ public:
+  SouthwellSolver(const RadiosityProblem& problem, const SparseRows& matrix)
+      : OwnedColumns{GatheringColumns(problem, matrix)}, ProgressiveSolver(problem, columns) {
+    setName("southwell");
+  }
+};
+
+}  // namespace
+
+SolverKind parseSolverKind(const std::string& name) {
+  for (const KindName& k : kKinds)
+    if (name == k.name) return k.kind;
+  throw InputError("unknown solver '" + name + "' (expected " + solverKindNames() + ")");
+}
+
+std::string solverKindName(SolverKind kind) {
+  for (const KindName& k : kKinds)
+    if (kind == k.kind) return k.name;
+  return "?";
+}
+
+std::string solverKindNames() {
+  std::string names;
+  for (const KindName& k : kKinds) names += (names.empty() ? "" : " | ") + std::string(k.name);
+  return names;
+}
+
+bool needsGatheringMatrix(SolverKind kind) { return kind != SolverKind::Progressive; }
+
+int defaultMaxIterations(SolverKind kind, int elements) {
+  switch (kind) {
+    case SolverKind::Progressive:
+    case SolverKind::Southwell:
+      return std::max(100000, 200 * elements);
+    case SolverKind::GaussSeidel:
+    case SolverKind::Jacobi:
+      return 10000;
+  }
+  return 10000;
+}
+
+std::unique_ptr<Solver> makeSolver(SolverKind kind, const RadiosityProblem& problem,
+                                   ShotRows& shots,
+                                   const std::function<SparseRows()>& gatheringMatrix) {
+  switch (kind) {
+    case SolverKind::Progressive:
+      return std::make_unique<ProgressiveSolver>(problem, shots);
+    case SolverKind::Southwell:
+      return std::make_unique<SouthwellSolver>(problem, gatheringMatrix());
+    case SolverKind::Jacobi:
+      return std::make_unique<JacobiSolver>(problem, gatheringMatrix());
+    case SolverKind::GaussSeidel:
+      return std::make_unique<GaussSeidelSolver>(problem, gatheringMatrix());
+  }
+  return nullptr;
+}
+
+}  // namespace rad
