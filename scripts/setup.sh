@@ -21,6 +21,8 @@ packages=(
 )
 # `scripts/setup.sh --fuzz`: clang and its libFuzzer runtime too (scripts/fuzz.sh; issue 9).
 if [[ " $* " == *" --fuzz "* ]]; then packages+=(clang libclang-rt-14-dev); fi
+# `scripts/setup.sh --format`: clang-format for the formatting check (scripts/check_format.sh).
+if [[ " $* " == *" --format "* ]]; then packages+=(clang-format); fi
 # `scripts/setup.sh --bench`: matplotlib for the benchmark's PNG plots (bench/run_all.sh; issue 8).
 if [[ " $* " == *" --bench "* ]]; then packages+=(python3-matplotlib python3-numpy); fi
 
