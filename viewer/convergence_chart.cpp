@@ -9,8 +9,10 @@
 #include <vtkPlot.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace rad {
 
@@ -27,6 +29,7 @@ ConvergenceChart::ConvergenceChart()
   chart_->GetAxis(vtkAxis::BOTTOM)->SetTitle("iteration");
   chart_->GetAxis(vtkAxis::LEFT)->SetLogScale(true);
   chart_->GetTitleProperties()->SetFontSize(13);
+  chart_->GetTitleProperties()->SetJustificationToCentered();
   for (const char* name : {"iteration", "measure", "tolerance"}) {
     auto column = vtkSmartPointer<vtkDoubleArray>::New();
     column->SetName(name);
@@ -46,7 +49,11 @@ void ConvergenceChart::setHistory(const std::vector<double>& history, const std:
   }
   table_->Modified();
   chart_->ClearPlots();
-  chart_->SetTitle("convergence: " + measure);
+  measure_ = measure;
+  if (panelWidth_ > 0)
+    fitTitle(panelWidth_, dpi_);
+  else
+    chart_->SetTitle("convergence: " + measure);
   chart_->GetAxis(vtkAxis::LEFT)->SetTitle(measure.size() > 24 ? "measure (log)" : measure);
   if (table_->GetNumberOfRows() < 1) return;
   vtkPlot* curve = chart_->AddPlot(vtkChart::LINE);
@@ -60,6 +67,46 @@ void ConvergenceChart::setHistory(const std::vector<double>& history, const std:
     line->GetPen()->SetLineType(vtkPen::DASH_LINE);
   }
   chart_->RecalculateBounds();
+}
+
+bool ConvergenceChart::fitTitle(int panelWidthPixels, int dpi) {
+  panelWidth_ = panelWidthPixels, dpi_ = dpi;
+  // vtkChartXY centres the title on the plot area, which starts after the left axis (its labels
+  // and title, up to about leftBorder pixels) and ends rightBorder pixels before the panel's edge:
+  // the title stays inside the panel while it is no wider than twice the room right of the centre.
+  constexpr int leftBorder = 80, rightBorder = 20, margin = 4;
+  const double room = panelWidthPixels - leftBorder + rightBorder - 2 * margin;
+  std::vector<std::string> words{"convergence:"};
+  std::istringstream in(measure_);
+  for (std::string w; in >> w;) words.push_back(w);
+  vtkTextProperty* style = chart_->GetTitleProperties();
+  vtkTextRenderer* text = vtkTextRenderer::GetInstance();
+  auto width = [&](const std::string& s) {
+    int box[4] = {0, 0, 0, 0};
+    if (!text || !text->GetBoundingBox(style, s, box, dpi)) return 8.0 * s.size();  // no FreeType
+    return static_cast<double>(box[1] - box[0] + 1);
+  };
+  for (int size = 13; size >= 9; --size) {
+    style->SetFontSize(size);
+    // Greedy wrap between words, at most three lines.
+    std::vector<std::string> lines;
+    bool fits = true;
+    for (const std::string& w : words) {
+      if (!lines.empty() && width(lines.back() + " " + w) <= room)
+        lines.back() += " " + w;
+      else
+        lines.push_back(w);
+      fits = fits && width(lines.back()) <= room;
+    }
+    if (fits && lines.size() <= 3) {
+      std::string title = lines[0];
+      for (size_t k = 1; k < lines.size(); ++k) title += "\n" + lines[k];
+      chart_->SetTitle(title);
+      return true;
+    }
+  }
+  chart_->SetTitle("");
+  return false;
 }
 
 }  // namespace rad

@@ -4,6 +4,7 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCommand.h>
 #include <vtkDoubleArray.h>
 #include <vtkHardwareSelector.h>
 #include <vtkIdTypeArray.h>
@@ -40,8 +41,6 @@
 
 namespace rad {
 namespace {
-
-constexpr double chartWidth = 0.36;  // share of the window the convergence panel takes
 
 // Patch outlines: edges used by one cell only (open borders, creases and material changes,
 // where the vertices are split) or by two cells of different patches.
@@ -121,8 +120,12 @@ void SolutionViewer::build() {
   const bool withChart = options_.chart && live_ && !live_->history().empty();
   scene_ = vtkSmartPointer<vtkRenderer>::New();
   scene_->SetBackground(0.32, 0.34, 0.43);
-  scene_->SetViewport(0, 0, withChart ? 1 - chartWidth : 1, 1);
   window_->AddRenderer(scene_);
+  // The scalar bar has a strip of its own, in the scene's colour, so it never covers the walls.
+  barStrip_ = vtkSmartPointer<vtkRenderer>::New();
+  barStrip_->SetBackground(scene_->GetBackground());
+  barStrip_->InteractiveOff();
+  window_->AddRenderer(barStrip_);
 
   meshMapper_ = vtkSmartPointer<vtkPolyDataMapper>::New();
   meshMapper_->SetInputData(solution_);
@@ -156,15 +159,16 @@ void SolutionViewer::build() {
   scalarBar_->SetLabelFormat("%.3g");
   scalarBar_->SetMaximumWidthInPixels(90);
   scalarBar_->SetBarRatio(0.25);
+  scalarBar_->SetVerticalTitleSeparation(6);  // the title clear of the top label
   scalarBar_->GetTitleTextProperty()->SetFontSize(12);
   scalarBar_->GetTitleTextProperty()->ItalicOff();
   scalarBar_->GetLabelTextProperty()->ItalicOff();
   scalarBar_->UnconstrainedFontSizeOn();
   scalarBar_->GetLabelTextProperty()->SetFontSize(12);
-  scalarBar_->SetPosition(0.86, 0.08);
-  scalarBar_->SetWidth(0.13);
-  scalarBar_->SetHeight(0.8);
-  scene_->AddViewProp(scalarBar_);
+  scalarBar_->SetPosition(0.06, 0.06);
+  scalarBar_->SetWidth(0.9);
+  scalarBar_->SetHeight(0.84);
+  barStrip_->AddViewProp(scalarBar_);
 
   help_ = vtkSmartPointer<vtkTextActor>::New();
   help_->SetInput(keyHelp().c_str());
@@ -186,9 +190,10 @@ void SolutionViewer::build() {
 
   if (withChart) {
     chart_ = new ConvergenceChart();
-    chart_->renderer()->SetViewport(1 - chartWidth, 0, 1, 1);
     window_->AddRenderer(chart_->renderer());
   }
+  layout();
+  window_->AddObserver(vtkCommand::StartEvent, this, &SolutionViewer::onRenderStart);
 
   mesh_->GetProperty()->SetEdgeVisibility(options_.edges);
   outlines_->SetVisibility(options_.outlines);
@@ -205,13 +210,53 @@ void SolutionViewer::build() {
   refreshStatus();
 }
 
+ViewerLayout SolutionViewer::layoutFor(int width, int height, bool chart) {
+  // The convergence panel takes 36% of the width, and shows only in windows at least 640 px wide
+  // and 240 px high (a panel of 230 px or more, with the scene keeping 410 px and more): below
+  // that the 3D view gets the room. The scalar bar's strip is 110 px wide, at most a quarter of
+  // the window (its fonts shrink with it, from 12 px down to 8), and is dropped below 64 px
+  // (windows narrower than 256 px).
+  ViewerLayout l;
+  l.chart = chart && width >= 640 && height >= 240;
+  const double panel = l.chart ? 0.36 : 0.0;
+  const double strip = std::min(110.0, 0.25 * width);
+  l.barRight = 1 - panel;
+  l.sceneRight = strip >= 64 ? l.barRight - strip / width : l.barRight;
+  l.barFontSize = std::max(8, std::min(12, static_cast<int>(12 * strip / 110)));
+  return l;
+}
+
+void SolutionViewer::layout() {
+  const int* size = window_->GetSize();
+  const int width = size[0] > 0 ? size[0] : options_.width;
+  const int height = size[1] > 0 ? size[1] : options_.height;
+  if (width == laidOut_[0] && height == laidOut_[1]) return;
+  laidOut_[0] = width, laidOut_[1] = height;
+  ViewerLayout l = layoutFor(width, height, chart_ != nullptr);
+  // A title that cannot fit hides the panel: never a cut title.
+  if (l.chart &&
+      !chart_->fitTitle(static_cast<int>(std::lround((1 - l.barRight) * width)), window_->GetDPI()))
+    l = layoutFor(width, height, false);
+  scene_->SetViewport(0, 0, l.sceneRight, 1);
+  const bool bar = l.barRight > l.sceneRight;
+  barStrip_->SetViewport(bar ? l.sceneRight : 0, 0, bar ? l.barRight : 1, 1);
+  barStrip_->SetDraw(bar);
+  scalarBar_->GetTitleTextProperty()->SetFontSize(l.barFontSize);
+  scalarBar_->GetLabelTextProperty()->SetFontSize(l.barFontSize);
+  if (chart_) {
+    chart_->renderer()->SetViewport(l.barRight, 0, 1, 1);
+    chart_->renderer()->SetDraw(l.chart);
+  }
+}
+
 void SolutionViewer::resetCamera() {
   double bounds[6];
   solution_->GetBounds(bounds);
   const Eigen::Vector3d lo(bounds[0], bounds[2], bounds[4]), hi(bounds[1], bounds[3], bounds[5]);
   const double* viewport = scene_->GetViewport();
-  const double aspect = (viewport[2] - viewport[0]) * options_.width /
-                        ((viewport[3] - viewport[1]) * options_.height);
+  const int* size = window_->GetSize();
+  const double aspect = (viewport[2] - viewport[0]) * (size[0] > 0 ? size[0] : options_.width) /
+                        ((viewport[3] - viewport[1]) * (size[1] > 0 ? size[1] : options_.height));
   CameraSpec c;
   if (options_.camera) {
     c = *options_.camera;
@@ -247,6 +292,9 @@ void SolutionViewer::resetCamera() {
   camera->SetFocalPoint(c.lookAt.data());
   camera->SetViewUp(c.up.data());
   camera->SetViewAngle(c.vfovDegrees);
+  // A view narrower than high (a small window, the bar's strip and the panel taken off) keeps a
+  // given camera's whole frame: its angle then spans the width.
+  camera->SetUseHorizontalViewAngle(options_.camera && aspect < 1);
   camera->OrthogonalizeViewUp();
   scene_->ResetCameraClippingRange();
 }

@@ -12,6 +12,7 @@
 #include "viewer/scene_camera.h"
 
 class vtkActor;
+class vtkObject;
 class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkRenderer;
@@ -22,6 +23,15 @@ class vtkTextActor;
 namespace rad {
 
 class ConvergenceChart;
+
+// The window split left to right into the 3D view, the scalar bar's strip and the convergence
+// panel, as fractions of the window's width (SolutionViewer::layoutFor states the rule).
+struct ViewerLayout {
+  double sceneRight = 1;  // the 3D view: [0, sceneRight]
+  double barRight = 1;    // the scalar bar: [sceneRight, barRight]; empty when the bar is hidden
+  bool chart = false;     // the convergence panel: [barRight, 1]
+  int barFontSize = 12;
+};
 
 struct ViewerOptions {
   DisplayScalar scalar = DisplayScalar::Colour;
@@ -62,9 +72,13 @@ class SolutionViewer {
   void pickAt(int x, int y);
   void showRows(int element);
   static std::string keyHelp();
+  // The layout of a window this many pixels wide and high; `chart`: there is a curve to show.
+  static ViewerLayout layoutFor(int width, int height, bool chart);
 
  private:
   void build();
+  void layout();  // from the window's current size; run before every render
+  void onRenderStart(vtkObject*, unsigned long, void*) { layout(); }
   void refreshColours();
   void refreshSolution();  // after the live solver moved
   void refreshStatus();
@@ -84,7 +98,8 @@ class SolutionViewer {
   std::string lastMessage_;
 
   vtkSmartPointer<vtkRenderWindow> window_;
-  vtkSmartPointer<vtkRenderer> scene_;
+  vtkSmartPointer<vtkRenderer> scene_, barStrip_;
+  int laidOut_[2] = {0, 0};  // the window size layout() last saw
   vtkSmartPointer<vtkPolyDataMapper> meshMapper_;
   vtkSmartPointer<vtkActor> mesh_, outlines_, rays_;
   vtkSmartPointer<vtkScalarBarActor> scalarBar_;

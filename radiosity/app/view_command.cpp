@@ -210,7 +210,9 @@ void registerViewCommand(CLI::App& app, CommandAction& run) {
   view->add_flag("--smooth", args->smooth, "Interpolated vertex colours instead of flat elements");
   view->add_flag("--edges", args->edges, "Show element edges");
   view->add_flag("--outlines", args->outlines, "Show patch outlines");
-  view->add_flag("--no-chart", args->noChart, "No convergence panel (and no replay of the solve)");
+  view->add_flag("--no-chart", args->noChart,
+                 "No convergence panel (and no replay of the solve); the panel shows only in "
+                 "windows at least 640x240");
   view->add_flag("--no-help", args->noHelp, "Start without the key overlay");
   view->add_option("--rays-of", args->raysOf, "Draw the form-factor rays of this element")
       ->check(CLI::NonNegativeNumber);

@@ -98,23 +98,56 @@ TEST(ViewScreenshot, CornellBoxFromItsCameraHasRedLeftGreenRight) {
   for (const auto& entry : fs::directory_iterator(dir)) files += entry.path().extension() == ".png";
   EXPECT_EQ(files, 1);
 
-  // From (0.278, 0.273, -0.8) looking +z with +y up, +x is to the left: the red wall (x = 0.556)
-  // spans about 13-28% of the width at mid height, the green wall (x = 0) about 72-87%.
-  const auto red = image.mean(0.17, 0.25, 0.4, 0.6);
+  // From (0.278, 0.273, -0.8) looking +z with +y up, +x is to the left. The scene is the left
+  // 240 px (the scalar bar's strip takes the right 80), square, so the 39.3° frame spans its
+  // width: the red wall (x = 0.556) covers about 1-15% of the image's width at mid height, the
+  // green wall (x = 0) about 59-74%.
+  const auto red = image.mean(0.04, 0.12, 0.4, 0.6);
   EXPECT_GT(red[0], 2 * red[1]) << "left wall is not red";
   EXPECT_GT(red[0], 2 * red[2]) << "left wall is not red";
-  const auto green = image.mean(0.75, 0.83, 0.4, 0.6);
+  const auto green = image.mean(0.62, 0.70, 0.4, 0.6);
   EXPECT_GT(green[1], 1.3 * green[0]) << "right wall is not green";
   EXPECT_GT(green[1], 1.3 * green[2]) << "right wall is not green";
 
-  // Most of the frame is the box, not the background (the top-left corner sees past the box).
-  const auto background = image.at(0.0, 0.0);
+  // Most of the frame is the box, not the background (the strip's top-right corner).
+  const auto background = image.at(1.0, 0.0);
   int scene = 0;
   for (const auto& p : image.rgb)
     scene += std::abs(p[0] - background[0]) + std::abs(p[1] - background[1]) +
                  std::abs(p[2] - background[2]) >
              6;
   EXPECT_GT(scene, static_cast<int>(image.rgb.size() / 2));
+  fs::remove_all(dir);
+}
+
+// A small window keeps the scene in view: no convergence panel over the green wall (below 640 px
+// wide the panel is hidden) and the scalar bar in a strip of its own, off the walls. Before the
+// layout rule the panel took the right 36% of a 400 px window and the bar sat on the green wall.
+TEST(ViewScreenshot, SmallWindowShowsTheGreenWallClearOfPanelAndBar) {
+  if (!haveXvfb())
+    GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
+  const fs::path dir = cornellWithCamera("view_small");
+  const fs::path png = dir / "small.png";
+  std::string errors;
+  ASSERT_EQ(runView((dir / "cornell_box.obj").string() + " --elements 300 --rays 64 --screenshot " +
+                        png.string() + " --size 400x400 --camera-from-scene --quiet",
+                    errors),
+            0)
+      << errors;
+  const Image image = readPng(png);
+  ASSERT_EQ(image.width, 400);
+  ASSERT_EQ(image.height, 400);
+  // The scene takes the left 290 px (the bar's strip the next 110), its camera angle spanning
+  // the width: the green wall covers about x 240-290, y 100-330 (checked on the image).
+  for (const double x0 : {0.62, 0.66}) {
+    const auto green = image.mean(x0, x0 + 0.04, 0.35, 0.65);
+    EXPECT_GT(green[1], 1.3 * green[0]) << "no green wall at x " << x0;
+    EXPECT_GT(green[1], 1.3 * green[2]) << "no green wall at x " << x0;
+  }
+  // And the red wall on the left, as in the large window.
+  const auto red = image.mean(0.04, 0.1, 0.35, 0.65);
+  EXPECT_GT(red[0], 2 * red[1]) << "left wall is not red";
+  EXPECT_GT(red[0], 2 * red[2]) << "left wall is not red";
   fs::remove_all(dir);
 }
 
@@ -126,24 +159,42 @@ TEST(ViewScreenshot, ConvergencePanelAndSavedSolution) {
   const fs::path withChart = dir / "chart.png";
   ASSERT_EQ(runView((dir / "cornell_box.obj").string() +
                         " --elements 200 --rays 32 --edges --outlines --rays-of 5"
-                        " --screenshot " +
-                        withChart.string() + " --size 400x200 --quiet",
+                        " --camera-from-scene --screenshot " +
+                        withChart.string() + " --size 1280x720 --quiet",
                     errors),
             0)
       << errors;
   const Image image = readPng(withChart);
-  ASSERT_EQ(image.width, 400);
-  ASSERT_EQ(image.height, 200);
-  // The panel (right 36%) has a white background with the curve and axes drawn on it.
+  ASSERT_EQ(image.width, 1280);
+  ASSERT_EQ(image.height, 720);
+  // At the default size the panel (right 36%) is shown: a white background with the curve and
+  // axes drawn on it.
+  const int panel = static_cast<int>(0.645 * image.width);
   int white = 0, ink = 0, total = 0;
   for (int y = 0; y < image.height; ++y)
-    for (int x = static_cast<int>(0.66 * image.width); x < image.width; ++x, ++total) {
+    for (int x = panel; x < image.width; ++x, ++total) {
       const auto& p = image.rgb[y * image.width + x];
       white += p[0] > 245 && p[1] > 245 && p[2] > 245;
       ink += p[0] < 200 || p[1] < 200 || p[2] < 200;
     }
   EXPECT_GT(white, total / 2);
   EXPECT_GT(ink, 50);
+  // Its title (the top 30 rows) is drawn and not cut: no ink in the 4 columns at either edge.
+  int title = 0, edge = 0;
+  for (int y = 0; y < 30; ++y)
+    for (int x = panel; x < image.width; ++x) {
+      const auto& p = image.rgb[y * image.width + x];
+      const bool dark = p[0] < 160 && p[1] < 160 && p[2] < 160;
+      title += dark;
+      edge += dark && (x < panel + 4 || x >= image.width - 4);
+    }
+  EXPECT_GT(title, 100);
+  EXPECT_EQ(edge, 0);
+  // The scalar bar's strip (110 px left of the panel) leaves the green wall, 0.44-0.545 of the
+  // width from the scene camera, uncovered up to its inner edge.
+  const auto green = image.mean(0.5, 0.54, 0.3, 0.7);
+  EXPECT_GT(green[1], 1.3 * green[0]) << "right wall is not green next to the bar";
+  EXPECT_GT(green[1], 1.3 * green[2]) << "right wall is not green next to the bar";
 
   // A saved solution opens from its directory.
   const fs::path out = dir / "out";

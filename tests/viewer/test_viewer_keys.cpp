@@ -53,5 +53,25 @@ TEST_F(ViewerKeys, EveryHelpKeyIsHandledAndPickingFindsTheFacingWall) {
   std::filesystem::remove(png);
 }
 
+// The layout rule (no window needed): the panel shows from 640 px wide, the bar's strip is
+// 110 px (a quarter of narrower windows) and never overlaps the scene or the panel.
+TEST(ViewerLayout, PanelHidesInSmallWindowsAndTheBarHasItsOwnStrip) {
+  const ViewerLayout large = SolutionViewer::layoutFor(1280, 720, true);
+  EXPECT_TRUE(large.chart);
+  EXPECT_NEAR(large.barRight, 0.64, 1e-12);
+  EXPECT_NEAR((large.barRight - large.sceneRight) * 1280, 110, 1e-9);
+  EXPECT_EQ(large.barFontSize, 12);
+  EXPECT_FALSE(SolutionViewer::layoutFor(1280, 720, false).chart);
+  EXPECT_FALSE(SolutionViewer::layoutFor(639, 720, true).chart);
+  EXPECT_FALSE(SolutionViewer::layoutFor(1280, 239, true).chart);
+  const ViewerLayout small = SolutionViewer::layoutFor(400, 400, true);
+  EXPECT_FALSE(small.chart);
+  EXPECT_EQ(small.barRight, 1.0);
+  EXPECT_NEAR(small.sceneRight, 0.75, 1e-12);
+  EXPECT_EQ(small.barFontSize, 10);
+  const ViewerLayout tiny = SolutionViewer::layoutFor(200, 150, false);
+  EXPECT_EQ(tiny.sceneRight, 1.0);  // no room for the bar
+}
+
 }  // namespace
 }  // namespace rad
