@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "meshing/element_locator.h"
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
@@ -101,49 +102,23 @@ class DisplayedRadiance {
   // elementMeans: vertices take the area-weighted mean of their elements' values (the display
   // before receiver-point values); otherwise the vertex colours `radiosity solve` writes.
   explicit DisplayedRadiance(const SolveResult& r, bool elementMeans = false)
-      : result_(r), interpolation_(*r.mesh) {
+      : interpolation_(*r.mesh), locator_(*r.mesh) {
     const std::vector<std::array<Rgb, 3>> none;
     for (const Rgb& l : interpolateVertexRadiance(interpolation_, r.radiosity,
                                                   elementMeans ? none : r.pointRadiosity))
       vertexValues_.emplace_back(l.r, l.g, l.b);
-    byPatch_.resize(r.mesh->patchCount());
-    for (int e = 0; e < r.mesh->elementCount(); ++e) byPatch_[r.mesh->patch(e)].push_back(e);
-  }
-
-  // Element containing p and p's barycentric weights in it.
-  int locate(int patch, const Eigen::Vector3d& p, Eigen::Vector3d& weights) const {
-    const PatchMesh& mesh = *result_.mesh;
-    int best = -1;
-    double bestOutside = 1e300;
-    for (int e : byPatch_[patch]) {
-      const auto c = mesh.corners(e);
-      const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]);
-      const double area2 = n.squaredNorm();
-      Eigen::Vector3d w;
-      for (int k = 0; k < 3; ++k)
-        w[k] = (c[(k + 1) % 3] - p).cross(c[(k + 2) % 3] - p).dot(n) / area2;
-      const double outside = -std::min(0.0, w.minCoeff());
-      if (outside < bestOutside) {
-        bestOutside = outside;
-        best = e;
-        weights = w;
-        if (outside == 0) break;
-      }
-    }
-    return best;
   }
 
   Eigen::Vector3d at(int patch, const Eigen::Vector3d& p) const {
     Eigen::Vector3d w;
-    const auto& t = interpolation_.triangle(locate(patch, p, w));
+    const auto& t = interpolation_.triangle(locator_.locate(patch, p, w));
     return w[0] * vertexValues_[t[0]] + w[1] * vertexValues_[t[1]] + w[2] * vertexValues_[t[2]];
   }
 
  private:
-  const SolveResult& result_;
   VertexInterpolation interpolation_;
+  ElementLocator locator_;
   std::vector<Eigen::Vector3d> vertexValues_;
-  std::vector<std::vector<int>> byPatch_;
 };
 
 // Relative RMS over the reference's non-emitting elements, area-weighted, of value(e) − truth(e).
@@ -211,11 +186,11 @@ int main(int argc, char** argv) {
   // or more: the errors of both shrink with patch size and ray count.
   t0 = std::chrono::steady_clock::now();
   const SolveResult check = solveReference(scene, referenceElements, 16, 32, 2);
-  const DisplayedRadiance checkField(check);
+  const ElementLocator checkElements(*check.mesh);
   const double referenceError = relativeRms(reference, [&](int e) {
     Eigen::Vector3d w;
-    return radiance(check.radiosity[checkField.locate(reference.mesh->patch(e),
-                                                      reference.mesh->centroid(e), w)]);
+    return radiance(check.radiosity[checkElements.locate(reference.mesh->patch(e),
+                                                         reference.mesh->centroid(e), w)]);
   });
   std::fprintf(
       stderr,
