@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "meshing/element_locator.h"
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/core/log.h"
 #include "radiosity/output/vertex_colors_ply.h"
@@ -101,50 +102,23 @@ class DisplayedRadiance {
   // elementMeans: vertices take the area-weighted mean of their elements' values (the display
   // before receiver-point values); otherwise the vertex colours `radiosity solve` writes.
   explicit DisplayedRadiance(const SolveResult& r, bool elementMeans = false)
-      : result_(r), interpolation_(*r.solution.mesh) {
+      : interpolation_(*r.solution.mesh), locator_(*r.solution.mesh) {
     const std::vector<std::array<Rgb, 3>> none;
     for (const Rgb& l : interpolateVertexRadiance(interpolation_, r.solution.radiosity,
                                                   elementMeans ? none : r.solution.pointRadiosity))
       vertexValues_.emplace_back(l.r, l.g, l.b);
-    byPatch_.resize(r.solution.mesh->patchCount());
-    for (int e = 0; e < r.solution.mesh->elementCount(); ++e)
-      byPatch_[r.solution.mesh->patch(e)].push_back(e);
-  }
-
-  // Element containing p and p's barycentric weights in it.
-  int locate(int patch, const Eigen::Vector3d& p, Eigen::Vector3d& weights) const {
-    const PatchMesh& mesh = *result_.solution.mesh;
-    int best = -1;
-    double bestOutside = 1e300;
-    for (int e : byPatch_[patch]) {
-      const auto c = mesh.corners(e);
-      const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]);
-      const double area2 = n.squaredNorm();
-      Eigen::Vector3d w;
-      for (int k = 0; k < 3; ++k)
-        w[k] = (c[(k + 1) % 3] - p).cross(c[(k + 2) % 3] - p).dot(n) / area2;
-      const double outside = -std::min(0.0, w.minCoeff());
-      if (outside < bestOutside) {
-        bestOutside = outside;
-        best = e;
-        weights = w;
-        if (outside == 0) break;
-      }
-    }
-    return best;
   }
 
   Eigen::Vector3d at(int patch, const Eigen::Vector3d& p) const {
     Eigen::Vector3d w;
-    const auto& t = interpolation_.triangle(locate(patch, p, w));
+    const auto& t = interpolation_.triangle(locator_.locate(patch, p, w));
     return w[0] * vertexValues_[t[0]] + w[1] * vertexValues_[t[1]] + w[2] * vertexValues_[t[2]];
   }
 
  private:
-  const SolveResult& result_;
   VertexInterpolation interpolation_;
+  ElementLocator locator_;
   std::vector<Eigen::Vector3d> vertexValues_;
-  std::vector<std::vector<int>> byPatch_;
 };
 
 // Relative RMS over the reference's non-emitting elements, area-weighted, of value(e) − truth(e).
@@ -212,10 +186,10 @@ int main(int argc, char** argv) {
   // or more: the errors of both shrink with patch size and ray count.
   t0 = std::chrono::steady_clock::now();
   const SolveResult check = solveReference(scene, referenceElements, 16, 32, 2);
-  const DisplayedRadiance checkField(check);
+  const ElementLocator checkElements(*check.solution.mesh);
   const double referenceError = relativeRms(reference, [&](int e) {
     Eigen::Vector3d w;
-    return radiance(check.solution.radiosity[checkField.locate(
+    return radiance(check.solution.radiosity[checkElements.locate(
         reference.solution.mesh->patch(e), reference.solution.mesh->centroid(e), w)]);
   });
   std::fprintf(

@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "meshing/element_locator.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/log.h"
 #include "radiosity/pipeline/solve_pipeline.h"
@@ -45,40 +46,21 @@ struct Config {
 };
 
 // The radiance (B/π) of a solution at a point of an input polygon: the value of the element of
-// that polygon containing the point (the nearest by barycentric distance when rounding puts it
-// just outside all of them).
+// that polygon containing the point (ElementLocator: the one it is least outside of when rounding
+// puts it just outside all of them).
 class ElementLookup {
  public:
-  explicit ElementLookup(const SolveResult& r)
-      : result_(r), byPatch_(r.solution.mesh->patchCount()) {
-    for (int e = 0; e < r.solution.mesh->elementCount(); ++e)
-      byPatch_[r.solution.mesh->patch(e)].push_back(e);
-  }
+  explicit ElementLookup(const SolveResult& r) : result_(r), locator_(*r.solution.mesh) {}
 
   Eigen::Vector3d radianceAt(int patch, const Eigen::Vector3d& p) const {
-    const PatchMesh& mesh = *result_.solution.mesh;
-    int best = -1;
-    double bestOutside = 1e300;
-    for (int e : byPatch_[patch]) {
-      const auto c = mesh.corners(e);
-      const Eigen::Vector3d n = (c[1] - c[0]).cross(c[2] - c[0]);
-      double outside = 0;
-      for (int k = 0; k < 3; ++k)
-        outside -=
-            std::min(0.0, (c[(k + 1) % 3] - p).cross(c[(k + 2) % 3] - p).dot(n) / n.squaredNorm());
-      if (outside < bestOutside) {
-        bestOutside = outside;
-        best = e;
-        if (outside == 0) break;
-      }
-    }
-    const Rgb& b = result_.solution.radiosity[best];
+    Eigen::Vector3d weights;
+    const Rgb& b = result_.solution.radiosity[locator_.locate(patch, p, weights)];
     return Eigen::Vector3d(b.r, b.g, b.b) / M_PI;
   }
 
  private:
   const SolveResult& result_;
-  std::vector<std::vector<int>> byPatch_;
+  ElementLocator locator_;
 };
 
 double relativeRmsError(const SolveResult& reference, const SolveResult& candidate) {

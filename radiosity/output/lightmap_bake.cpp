@@ -84,53 +84,51 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
     const auto& v = interpolation.triangle(e);
     return vertexRadiance[v[0]] * b[0] + vertexRadiance[v[1]] * b[1] + vertexRadiance[v[2]] * b[2];
   };
-  auto bounds = [&](const std::array<Vec2, 3>& t, int& x0, int& y0, int& x1, int& y1) {
-    const Vec2 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]), hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
-    x0 = std::max(0, static_cast<int>(std::floor(lo.x()))),
-    y0 = std::max(0, static_cast<int>(std::floor(lo.y())));
-    x1 = std::min(width - 1, static_cast<int>(std::floor(hi.x()))),
-    y1 = std::min(height - 1, static_cast<int>(std::floor(hi.y())));
-  };
 
   const int elements = mesh.elementCount();
   Progress progress("lightmap", 2 * static_cast<uint64_t>(elements), "element passes");
+  // One pass over the elements: each empty texel of an element's bounding box that
+  // `weights(t, x, y, b)` accepts (t the element in texel space) takes the element, its chart,
+  // `state` and the interpolated value at the barycentric weights b it gives.
+  auto rasterise = [&](TexelState state, auto&& weights) {
+    for (int e = 0; e < elements; ++e, progress.advance()) {
+      const auto& t = layout.texels[e];
+      const Vec2 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]), hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
+      const int x0 = std::max(0, static_cast<int>(std::floor(lo.x()))),
+                y0 = std::max(0, static_cast<int>(std::floor(lo.y())));
+      const int x1 = std::min(width - 1, static_cast<int>(std::floor(hi.x()))),
+                y1 = std::min(height - 1, static_cast<int>(std::floor(hi.y())));
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          const size_t i = map.index(x, y);
+          if (map.state[i] != TexelState::Empty) continue;
+          Eigen::Vector3d b;
+          if (!weights(t, x, y, b)) continue;
+          map.radiance.pixels[i] = value(e, b);
+          if (evaluate) texelBarycentric[i] = b;
+          map.chart[i] = layout.chartOfElement[e], map.element[i] = e, map.state[i] = state;
+        }
+    }
+  };
   // Pass 1: texel centres inside an element (first element wins on a shared edge).
-  for (int e = 0; e < elements; ++e, progress.advance()) {
-    const auto& t = layout.texels[e];
-    int x0, y0, x1, y1;
-    bounds(t, x0, y0, x1, y1);
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) {
-        const size_t i = map.index(x, y);
-        if (map.state[i] != TexelState::Empty) continue;
-        const Eigen::Vector3d b = barycentric(t, Vec2(x + 0.5, y + 0.5));
-        if (b.minCoeff() < -1e-12 || !b.allFinite()) continue;
-        const Eigen::Vector3d inside = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
-        map.radiance.pixels[i] = value(e, inside);
-        if (evaluate) texelBarycentric[i] = inside;
-        map.chart[i] = layout.chartOfElement[e], map.element[i] = e,
-        map.state[i] = TexelState::Covered;
-      }
-  }
-  // Pass 2: texels an element overlaps without holding their centre (chart borders, slivers).
-  for (int e = 0; e < elements; ++e, progress.advance()) {
-    const auto& t = layout.texels[e];
-    int x0, y0, x1, y1;
-    bounds(t, x0, y0, x1, y1);
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) {
-        const size_t i = map.index(x, y);
-        if (map.state[i] != TexelState::Empty) continue;
-        const std::array<Vec2, 3> lower{Vec2(x, y), Vec2(x + 1, y), Vec2(x + 1, y + 1)};
-        const std::array<Vec2, 3> upper{Vec2(x, y), Vec2(x + 1, y + 1), Vec2(x, y + 1)};
-        if (!trianglesOverlap2d(t, lower, 1e-9) && !trianglesOverlap2d(t, upper, 1e-9)) continue;
-        const Eigen::Vector3d nearest = nearestBarycentric(t, Vec2(x + 0.5, y + 0.5));
-        map.radiance.pixels[i] = value(e, nearest);
-        if (evaluate) texelBarycentric[i] = nearest;
-        map.chart[i] = layout.chartOfElement[e], map.element[i] = e,
-        map.state[i] = TexelState::Conservative;
-      }
-  }
+  rasterise(TexelState::Covered,
+            [](const std::array<Vec2, 3>& t, int x, int y, Eigen::Vector3d& inside) {
+              const Eigen::Vector3d b = barycentric(t, Vec2(x + 0.5, y + 0.5));
+              if (b.minCoeff() < -1e-12 || !b.allFinite()) return false;
+              inside = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
+              return true;
+            });
+  // Pass 2: texels an element overlaps without holding their centre (chart borders, slivers):
+  // the element's point nearest the centre.
+  rasterise(TexelState::Conservative,
+            [](const std::array<Vec2, 3>& t, int x, int y, Eigen::Vector3d& nearest) {
+              const std::array<Vec2, 3> lower{Vec2(x, y), Vec2(x + 1, y), Vec2(x + 1, y + 1)};
+              const std::array<Vec2, 3> upper{Vec2(x, y), Vec2(x + 1, y + 1), Vec2(x, y + 1)};
+              if (!trianglesOverlap2d(t, lower, 1e-9) && !trianglesOverlap2d(t, upper, 1e-9))
+                return false;
+              nearest = nearestBarycentric(t, Vec2(x + 0.5, y + 0.5));
+              return true;
+            });
   progress.finish();
   if (evaluate) {
     Progress gathering("lightmap gather", map.chart.size(), "texels");

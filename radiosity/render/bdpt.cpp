@@ -7,10 +7,6 @@
 namespace rad {
 namespace {
 
-// As in the path tracer: long specular chains (glass with total internal reflection) play
-// Russian roulette at every further step instead of being cut off.
-constexpr int kSpecularRouletteAfter = 8;
-
 // Area density of reaching `to` by a direction from `from` drawn with solid-angle density
 // `pdfDir`: pdfDir · |cos θ_to| / d².
 double toArea(double pdfDir, const Eigen::Vector3d& from, const SurfaceHit& to) {
@@ -64,28 +60,16 @@ void Bdpt::walk(std::vector<Vertex>& path, Eigen::Vector3d origin, Eigen::Vector
 
     if (m.isSpecular()) {
       v.pdfFwd = 0;  // see misWeight: a specular chain enters the weights as a whole
-      const double u = m.kind == SurfaceKind::Dielectric ? rng.uniform() : 0.0;
-      SpecularStep step = scatterSpecular(scene_, hit, direction, u);
-      if (!step.alive) return;
-      const bool refracted = step.direction.dot(hit.normal) * direction.dot(hit.normal) > 0;
-      if (fromLight && refracted) {
-        // The path tracer's weight scales radiance by (ηi/ηt)² for an eye ray going from ηi into
-        // ηt; light crossing the same way scales by (ηt/ηi)², so full paths agree.
-        const double eta = hit.front ? m.ior : 1.0 / m.ior;  // ηt/ηi along the light's travel
-        step.weight *= eta * eta * eta * eta;
-      }
+      // v.beta keeps the throughput arriving here; beta moves on past the mirror or glass.
+      if (!continueSpecular(
+              scene_, hit, origin, direction, beta, [&] { return rng.uniform(); },
+              fromLight ? Transport::Importance : Transport::Radiance))
+        return;
       v.specular = true;
       v.label = 'S';
       prev.pdfRev = 0;  // a delta seen from the specular vertex
       path.push_back(v);
-      beta = beta * step.weight;
-      origin = step.origin;
-      direction = step.direction;
-      if (++specularRun > kSpecularRouletteAfter) {
-        const double q = std::min(0.95, beta.maxComponent());
-        if (rng.uniform() >= q) return;
-        beta *= 1.0 / q;
-      }
+      if (++specularRun > kSpecularRouletteAfter && !survivesRoulette(beta, rng.uniform())) return;
       continue;
     }
     specularRun = 0;
@@ -107,11 +91,8 @@ void Bdpt::walk(std::vector<Vertex>& path, Eigen::Vector3d origin, Eigen::Vector
     if (!(pdfDir > 0)) return;
     origin = scene_.spawn(hit, direction);
     beta = beta * rho;  // f·cos/pdf = ρ
-    if (++diffuseBounces >= options_.rouletteAfter) {
-      const double q = std::min(0.95, beta.maxComponent());
-      if (rng.uniform() >= q) return;
-      beta *= 1.0 / q;
-    }
+    if (++diffuseBounces >= options_.rouletteAfter && !survivesRoulette(beta, rng.uniform()))
+      return;
   }
 }
 

@@ -40,12 +40,9 @@ Rgb DistributionRayTracer::radiance(const Eigen::Vector3d& startOrigin,
     const Material& m = *hit.material;
 
     if (m.isSpecular()) {
-      const double u = m.kind == SurfaceKind::Dielectric ? rng.uniform() : 0.0;
-      const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
-      if (!step.alive) break;
-      throughput = throughput * step.weight;
-      origin = step.origin;
-      direction = step.direction;
+      if (!continueSpecular(scene_, hit, origin, direction, throughput,
+                            [&] { return rng.uniform(); }))
+        break;
       lobePdf = 0;
       continue;
     }

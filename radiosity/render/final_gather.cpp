@@ -148,13 +148,9 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
     ++counts.closest;
     if (!hit.hit()) return {};
     if (hit.material->isSpecular()) {
-      if (depth >= options_.maxSpecularDepth) return {};
-      const double u = hit.material->kind == SurfaceKind::Dielectric ? rng.uniform() : 0.0;
-      const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
-      if (!step.alive) return {};
-      weight = weight * step.weight;
-      origin = step.origin;
-      direction = step.direction;
+      if (depth >= options_.maxSpecularDepth ||
+          !continueSpecular(scene_, hit, origin, direction, weight, [&] { return rng.uniform(); }))
+        return {};
       viaSpecular = true;
       continue;
     }
@@ -232,13 +228,10 @@ Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vecto
     if (!hit.hit()) return {};
     const Material& m = *hit.material;
     if (m.isSpecular()) {
-      if (depth >= options_.maxSpecularDepth) return {};
-      const double u = m.kind == SurfaceKind::Dielectric ? sampler.get1D() : 0.0;
-      const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
-      if (!step.alive) return {};
-      weight = weight * step.weight;
-      origin = step.origin;
-      direction = step.direction;
+      if (depth >= options_.maxSpecularDepth ||
+          !continueSpecular(scene_, hit, origin, direction, weight,
+                            [&] { return sampler.get1D(); }))
+        return {};
       continue;
     }
     if (!hit.front) return {};

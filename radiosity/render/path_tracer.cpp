@@ -12,10 +12,6 @@ double powerHeuristic(double pdfA, double pdfB) {
   return a / (a + b);
 }
 
-// A specular chain longer than this plays Russian roulette at every further step, so glass
-// with total internal reflection cannot trap a path forever (and no fixed cut-off biases it).
-constexpr int kSpecularRouletteAfter = 8;
-
 }  // namespace
 
 PathTracer::PathTracer(const RenderScene& scene, PathTracerOptions options)
@@ -49,19 +45,13 @@ Rgb PathTracer::trace(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d&
     const Material& m = *hit.material;
 
     if (m.isSpecular()) {
-      const double u = m.kind == SurfaceKind::Dielectric ? sampler.get1D() : 0.0;
-      const SpecularStep step = scatterSpecular(scene_, hit, direction, u);
-      if (!step.alive) break;
-      throughput = throughput * step.weight;
+      if (!continueSpecular(scene_, hit, origin, direction, throughput,
+                            [&] { return sampler.get1D(); }))
+        break;
       if (binning) eyeVertices.push_back('S');
-      origin = step.origin;
-      direction = step.direction;
       specularBefore = true;
-      if (++specularRun > kSpecularRouletteAfter) {
-        const double q = std::min(0.95, throughput.maxComponent());
-        if (sampler.get1D() >= q) break;
-        throughput *= 1.0 / q;
-      }
+      if (++specularRun > kSpecularRouletteAfter && !survivesRoulette(throughput, sampler.get1D()))
+        break;
       continue;
     }
     specularRun = 0;
@@ -107,11 +97,9 @@ Rgb PathTracer::trace(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d&
     origin = scene_.spawn(hit, direction);
     throughput = throughput * rho;
     specularBefore = false;
-    if (++diffuseBounces >= options_.rouletteAfter) {
-      const double q = std::min(0.95, throughput.maxComponent());
-      if (sampler.get1D() >= q) break;
-      throughput *= 1.0 / q;
-    }
+    if (++diffuseBounces >= options_.rouletteAfter &&
+        !survivesRoulette(throughput, sampler.get1D()))
+      break;
   }
   return result;
 }

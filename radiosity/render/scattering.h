@@ -27,6 +27,10 @@ inline Eigen::Vector3d reflect(const Eigen::Vector3d& d, const Eigen::Vector3d& 
   return d - 2 * d.dot(n) * n;
 }
 
+// What a path carries: radiance (eye paths) or importance (light paths, which bidirectional
+// methods walk from the emitters). They scale differently only where glass refracts.
+enum class Transport { Radiance, Importance };
+
 // One step along a specular chain: the ray leaving a mirror or glass hit and the factor the
 // path's throughput takes. `u` chooses between Fresnel reflection and refraction at glass.
 struct SpecularStep {
@@ -36,7 +40,8 @@ struct SpecularStep {
 };
 
 inline SpecularStep scatterSpecular(const RenderScene& scene, const SurfaceHit& hit,
-                                    const Eigen::Vector3d& direction, double u) {
+                                    const Eigen::Vector3d& direction, double u,
+                                    Transport transport = Transport::Radiance) {
   SpecularStep step;
   const Material& m = *hit.material;
   if (m.kind == SurfaceKind::Mirror) {
@@ -62,7 +67,45 @@ inline SpecularStep scatterSpecular(const RenderScene& scene, const SurfaceHit& 
   }
   step.origin = scene.spawn(hit, step.direction);
   step.alive = step.weight.maxComponent() > 0;
+  if (step.alive && transport == Transport::Importance &&
+      step.direction.dot(hit.normal) * direction.dot(hit.normal) > 0) {
+    // Refracted: the weight above scales radiance by (ηi/ηt)² for an eye ray going from ηi into
+    // ηt; light crossing the same way scales by (ηt/ηi)², so full paths agree.
+    const double eta = hit.front ? m.ior : 1.0 / m.ior;  // ηt/ηi along the light's travel
+    step.weight *= eta * eta * eta * eta;
+  }
   return step;
+}
+
+// The continuation of a path at a mirror or glass hit, as every path-building method takes it:
+// the Fresnel choice is drawn from uniform() at glass only (a mirror draws no random number),
+// `origin` and `direction` move onto the scattered ray and `throughput` takes its weight. Returns
+// false, changing nothing, where the path ends there (the back of a mirror, a zero weight).
+template <class Uniform>
+bool continueSpecular(const RenderScene& scene, const SurfaceHit& hit, Eigen::Vector3d& origin,
+                      Eigen::Vector3d& direction, Rgb& throughput, Uniform&& uniform,
+                      Transport transport = Transport::Radiance) {
+  const double u = hit.material->kind == SurfaceKind::Dielectric ? uniform() : 0.0;
+  const SpecularStep step = scatterSpecular(scene, hit, direction, u, transport);
+  if (!step.alive) return false;
+  throughput = throughput * step.weight;
+  origin = step.origin;
+  direction = step.direction;
+  return true;
+}
+
+// A specular chain longer than this plays Russian roulette at every further step (methods
+// without a depth limit), so glass with total internal reflection cannot trap a path forever
+// (and no fixed cut-off biases it).
+constexpr int kSpecularRouletteAfter = 8;
+
+// Russian roulette with `u` uniform in [0, 1): the path goes on with probability
+// min(0.95, max throughput), its throughput divided by that probability.
+inline bool survivesRoulette(Rgb& throughput, double u) {
+  const double q = std::min(0.95, throughput.maxComponent());
+  if (u >= q) return false;
+  throughput *= 1.0 / q;
+  return true;
 }
 
 }  // namespace rad
