@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <stdexcept>
 #include <string>
+
+#include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
 
 namespace rad {
 namespace {
@@ -53,8 +55,8 @@ int shelfPack(const std::vector<Sized>& sizes, int atlasWidth, std::vector<Chart
 
 LightmapLayout packLightmapCharts(const LightmapCharts& charts,
                                   const LightmapPackOptions& options) {
-  if (options.padding < 1) throw std::invalid_argument("lightmap padding must be at least 1 texel");
-  if (charts.charts.empty()) throw std::invalid_argument("no lightmap charts to pack");
+  RAD_CHECK_GE(options.padding, 1);
+  RAD_CHECK_MSG(!charts.charts.empty(), "no lightmap charts to pack");
   double area = 0;
   for (const LightmapChart& c : charts.charts) area += std::max(c.size.x() * c.size.y(), 1e-300);
 
@@ -76,15 +78,16 @@ LightmapLayout packLightmapCharts(const LightmapCharts& charts,
       height = shelfPack(sizes, width, rects);
     }
     if (width > options.maxAtlasSize || height > options.maxAtlasSize)
-      throw std::invalid_argument(
-          "texel size " + std::to_string(options.texelSize) + " needs an atlas larger than " +
-          std::to_string(options.maxAtlasSize) + " texels; use a larger --texel-size");
+      throw InputError("texel size " + std::to_string(options.texelSize) +
+                       " needs an atlas larger than " + std::to_string(options.maxAtlasSize) +
+                       " texels; use a larger --texel-size");
     layout.width = width;
     layout.height = height;
   } else {
     const int side = options.atlasSize;
     if (side < 1 + 2 * options.padding)
-      throw std::invalid_argument("lightmap size too small for the padding");
+      throw InputError("lightmap size " + std::to_string(side) + " too small for a padding of " +
+                       std::to_string(options.padding) + " texels; raise --lightmap-size");
     auto fits = [&](double t) {
       return shelfPack(rectSizes(charts, t, options.padding), side, rects) <= side;
     };
@@ -92,10 +95,9 @@ LightmapLayout packLightmapCharts(const LightmapCharts& charts,
     double hi = std::sqrt(area) / side, lo = hi;
     for (int i = 0; i < 200 && !fits(hi); ++i) hi *= 2;
     if (!fits(hi))
-      throw std::invalid_argument(std::to_string(charts.charts.size()) + " charts with " +
-                                  std::to_string(options.padding) +
-                                  " texels of padding do not fit a " + std::to_string(side) +
-                                  "² lightmap; raise --lightmap-size");
+      throw InputError(std::to_string(charts.charts.size()) + " charts with " +
+                       std::to_string(options.padding) + " texels of padding do not fit a " +
+                       std::to_string(side) + "² lightmap; raise --lightmap-size");
     while (fits(lo)) lo *= 0.5;
     for (int i = 0; i < 40; ++i) {  // bisection in log space: densest texel that still fits
       const double mid = std::sqrt(lo * hi);

@@ -40,7 +40,7 @@ struct LightmapLayout {
 
 // Shelf packing of the charts' rectangles, tallest first. With options.texelSize the atlas grows
 // to fit (about square); otherwise the texel size is the smallest (densest) that fits a square
-// atlas of options.atlasSize. Throws std::invalid_argument when the charts cannot fit.
+// atlas of options.atlasSize. Throws InputError when the charts cannot fit (options too small).
 LightmapLayout packLightmapCharts(const LightmapCharts& charts, const LightmapPackOptions& options);
 
 }  // namespace rad

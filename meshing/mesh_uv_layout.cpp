@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <stdexcept>
 #include <string>
+
+#include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
 
 namespace rad {
 namespace {
@@ -30,14 +32,16 @@ Eigen::Vector2d uvAt(const PatchMesh& mesh, int element, int vertex) {
   const std::array<Eigen::Vector2d, 3> uv = mesh.cornerUvs(element);
   for (int k = 0; k < 3; ++k)
     if (v[k] == vertex) return uv[k];
-  throw std::logic_error("uvAt: the vertex is not a corner of the element");
+  RAD_CHECK_MSG(false, "uvAt: the vertex is not a corner of the element");
+  return {};
 }
 
 }  // namespace
 
 LightmapLayout layoutFromMeshUvs(const PatchMesh& mesh, int width, int height, int padding) {
-  if (!mesh.hasUvs()) throw std::invalid_argument("layoutFromMeshUvs: the mesh has no UVs");
-  if (width < 1 || height < 1) throw std::invalid_argument("layoutFromMeshUvs: empty atlas");
+  RAD_CHECK_MSG(mesh.hasUvs(), "layoutFromMeshUvs: the mesh has no UVs");
+  RAD_CHECK_GE(width, 1);
+  RAD_CHECK_GE(height, 1);
   const int elements = mesh.elementCount();
   std::vector<int> parent(elements);
   std::iota(parent.begin(), parent.end(), 0);
@@ -95,15 +99,15 @@ LightmapLayout layoutFromMeshUvs(const PatchMesh& mesh, int width, int height, i
 }
 
 int atlasSideForTexelSize(const PatchMesh& mesh, double texelSize, int maxSide) {
-  if (!(texelSize > 0)) throw std::invalid_argument("texel size must be positive");
+  RAD_CHECK_GT(texelSize, 0.0);
   double surfaceArea = 0, uvTotal = 0;
   for (int e = 0; e < mesh.elementCount(); ++e)
     surfaceArea += mesh.area(e), uvTotal += uvArea(mesh.cornerUvs(e));
   const double side = std::ceil(std::sqrt(surfaceArea / uvTotal) / texelSize);
   if (!(side <= maxSide))
-    throw std::invalid_argument("texel size " + std::to_string(texelSize) +
-                                " needs a lightmap larger than " + std::to_string(maxSide) +
-                                " texels in the scene's UVs; use a larger --texel-size");
+    throw InputError("texel size " + std::to_string(texelSize) + " needs a lightmap larger than " +
+                     std::to_string(maxSide) +
+                     " texels in the scene's UVs; use a larger --texel-size");
   return std::max(8, static_cast<int>(side));
 }
 

@@ -15,7 +15,7 @@ namespace rad {
 LightmapLayout layoutFromMeshUvs(const PatchMesh& mesh, int width, int height, int padding);
 
 // The square atlas side whose texels measure about `texelSize` scene units on average over the
-// surface (sqrt of surface area over UV area); throws std::invalid_argument above maxSide.
+// surface (sqrt of surface area over UV area); throws InputError above maxSide.
 int atlasSideForTexelSize(const PatchMesh& mesh, double texelSize, int maxSide);
 
 }  // namespace rad

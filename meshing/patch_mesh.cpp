@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "meshing/polygon_triangulation.h"
+#include "radiosity/core/check.h"
 
 namespace rad {
 namespace {
@@ -26,10 +27,10 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
   mesh_.add_property(area_, "area");
 
   for (const PatchPolygon& polygon : polygons) {
-    if (!polygon.uvs.empty() && polygon.uvs.size() != polygon.vertices.size())
-      throw std::invalid_argument("PatchMesh: a polygon needs one UV per corner");
-    if (polygon.uvs.empty() != polygons.front().uvs.empty())
-      throw std::invalid_argument("PatchMesh: some polygons have UVs and others not");
+    RAD_CHECK_MSG(polygon.uvs.empty() || polygon.uvs.size() == polygon.vertices.size(),
+                  "PatchMesh: a polygon needs one UV per corner");
+    RAD_CHECK_MSG(polygon.uvs.empty() == polygons.front().uvs.empty(),
+                  "PatchMesh: some polygons have UVs and others not");
   }
   hasUvs_ = !polygons.empty() && !polygons.front().uvs.empty();
   if (hasUvs_) mesh_.add_property(uvs_, "uv");
@@ -43,8 +44,8 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
   for (const PatchPolygon& polygon : polygons) {
     std::vector<Eigen::Vector3d> points;
     for (int v : polygon.vertices) {
-      if (v < 0 || v >= static_cast<int>(positions.size()))
-        throw std::out_of_range("PatchMesh: vertex index out of range");
+      RAD_CHECK_GE(v, 0);
+      RAD_CHECK_LT(v, positions.size());
       points.push_back(positions[v]);
       if (first) {
         boundsMin_ = boundsMax_ = positions[v];
@@ -112,14 +113,14 @@ std::array<Eigen::Vector3d, 3> PatchMesh::corners(int element) const {
 }
 
 std::array<Eigen::Vector2d, 3> PatchMesh::cornerUvs(int element) const {
-  if (!hasUvs_) throw std::logic_error("PatchMesh::cornerUvs: the mesh has no UVs");
+  RAD_CHECK_MSG(hasUvs_, "PatchMesh::cornerUvs: the mesh has no UVs");
   const FaceUvs& face = mesh_.property(uvs_, this->face(element));
   const std::array<int, 3> v = cornerVertices(element);
   std::array<Eigen::Vector2d, 3> uv;
   for (int k = 0; k < 3; ++k) {
     const int j = static_cast<int>(std::find(face.vertex.begin(), face.vertex.end(), v[k]) -
                                    face.vertex.begin());
-    if (j == 3) throw std::logic_error("PatchMesh::cornerUvs: UVs out of step with the faces");
+    RAD_CHECK_MSG(j < 3, "PatchMesh::cornerUvs: UVs out of step with the faces");
     uv[k] = {face.uv[2 * j], face.uv[2 * j + 1]};
   }
   return uv;
@@ -202,7 +203,7 @@ void PatchMesh::splitUvs(TriMesh::FaceHandle f, int from, int to, int mid) {
   auto parentUv = [&](int vertex, int axis) {
     const int j = static_cast<int>(std::find(parent.vertex.begin(), parent.vertex.end(), vertex) -
                                    parent.vertex.begin());
-    if (j == 3) throw std::logic_error("PatchMesh: a split face lost its parent's corner");
+    RAD_CHECK_MSG(j < 3, "PatchMesh: a split face lost its parent's corner");
     return parent.uv[2 * j + axis];
   };
   FaceUvs child;
@@ -246,7 +247,7 @@ int PatchMesh::bisect(int element) {
 }
 
 void PatchMesh::subdivideUniform(double maxArea) {
-  if (!(maxArea > 0)) throw std::invalid_argument("subdivideUniform: maxArea must be positive");
+  RAD_CHECK_GT(maxArea, 0.0);
   bool changed = true;
   while (changed) {
     changed = false;

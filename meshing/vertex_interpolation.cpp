@@ -1,7 +1,8 @@
 #include "meshing/vertex_interpolation.h"
 
 #include <cmath>
-#include <stdexcept>
+
+#include "radiosity/core/check.h"
 
 namespace rad {
 
@@ -54,8 +55,8 @@ VertexInterpolation::VertexInterpolation(const PatchMesh& patchMesh, double crea
     offsets_.push_back(static_cast<int>(elements_.size()));
   }
   for (const auto& t : triangles_)
-    if (t[0] < 0 || t[1] < 0 || t[2] < 0)
-      throw std::logic_error("VertexInterpolation: element corner without an output vertex");
+    RAD_CHECK_MSG(t[0] >= 0 && t[1] >= 0 && t[2] >= 0,
+                  "VertexInterpolation: element corner without an output vertex");
 }
 
 std::vector<Eigen::Vector3d> VertexInterpolation::interpolate(

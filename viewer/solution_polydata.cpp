@@ -11,10 +11,10 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include "meshing/vertex_interpolation.h"
+#include "radiosity/core/check.h"
 
 namespace rad {
 namespace {
@@ -56,9 +56,7 @@ vtkSmartPointer<vtkPolyData> makeSolutionPolyData(const PatchMesh& mesh,
                                                   const std::vector<Rgb>& unshot,
                                                   const ToneMap& toneMap) {
   const int count = mesh.elementCount();
-  if (static_cast<int>(radiosity.size()) != count)
-    throw std::invalid_argument("makeSolutionPolyData: " + std::to_string(radiosity.size()) +
-                                " radiosity values for " + std::to_string(count) + " elements");
+  RAD_CHECK_EQ(radiosity.size(), count);
   const VertexInterpolation vertices(mesh);
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
@@ -95,10 +93,8 @@ vtkSmartPointer<vtkPolyData> makeSolutionPolyData(const PatchMesh& mesh,
 void setSolutionArrays(vtkPolyData* data, const std::vector<Rgb>& radiosity,
                        const std::vector<Rgb>& unshot, const ToneMap& toneMap) {
   const vtkIdType cells = data->GetNumberOfCells();
-  if (static_cast<vtkIdType>(radiosity.size()) != cells ||
-      (!unshot.empty() && static_cast<vtkIdType>(unshot.size()) != cells))
-    throw std::invalid_argument("setSolutionArrays: " + std::to_string(radiosity.size()) +
-                                " values for " + std::to_string(cells) + " cells");
+  RAD_CHECK_EQ(radiosity.size(), cells);
+  if (!unshot.empty()) RAD_CHECK_EQ(unshot.size(), cells);
   auto b = namedArray<vtkDoubleArray>(solution_array::radiosity, 3, cells);
   auto radiance = namedArray<vtkDoubleArray>(solution_array::radiance, 3, cells);
   auto remaining = namedArray<vtkDoubleArray>(solution_array::unshot, 3, cells);

@@ -31,7 +31,7 @@ inline constexpr const char* srgb = "srgb";
 inline constexpr const char* exposure = "exposure";
 }  // namespace solution_array
 
-// `unshot` may be empty (zeros). Throws std::invalid_argument on a size mismatch.
+// `unshot` may be empty (zeros). A size mismatch is a bug (RAD_CHECK: CheckFailure).
 vtkSmartPointer<vtkPolyData> makeSolutionPolyData(const PatchMesh& mesh,
                                                   const std::vector<Rgb>& radiosity,
                                                   const std::vector<Rgb>& unshot,

@@ -96,7 +96,9 @@ void runBake(const CLI::App& command, BakeOptions& o) {
         layout = packLightmapCharts(buildLightmapCharts(mesh, {o.chartAngle}),
                                     {o.texelSize, o.lightmapSize, o.padding});
       }
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
+      // The options do not fit this scene's charts: name the scene.
+      if (!e.file().empty()) throw;
       throw InputError(o.solve.scenePath, 0, e.what());
     }
     const double chartSeconds = since(t);

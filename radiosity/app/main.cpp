@@ -1,10 +1,11 @@
-// The `radiosity` command line. The only place that catches exceptions and chooses exit codes:
-// 0 success, 1 bad input or a failed run, 2 bad usage (unknown option, missing argument),
+// The `radiosity` command line. The only place that catches exceptions and chooses exit codes
+// (here and in runCommand, exit_codes.h): 0 success, 1 bad input or a failed run, 2 bad usage
+// (unknown option, missing argument), 3 a failed internal check (a bug in radiosity),
 // 130 / 143 interrupted by SIGINT / SIGTERM.
 #include <cstdio>
 
 #include "radiosity/app/commands.h"
-#include "radiosity/core/errors.h"
+#include "radiosity/app/exit_codes.h"
 #include "radiosity/core/interrupt.h"
 
 int main(int argc, char** argv) {
@@ -24,20 +25,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
     std::fprintf(stderr, "error: %s\nRun with --help for the options.\n", e.what());
-    return 2;
+    return rad::kExitUsage;
   }
 
   // Ctrl-C / SIGTERM: stop within a second, leave no partial output, exit 128 + signal.
   rad::installInterruptHandlers();
-  try {
-    if (run) run();
-    return 0;
-  } catch (const rad::Interrupted& e) {
-    std::fprintf(stderr, "radiosity: %s\n", e.what());
-    return e.exitCode();
-  } catch (const std::exception& e) {
-    // InputError messages already read "file:line: what".
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 1;
-  }
+  return rad::runCommand(run);
 }

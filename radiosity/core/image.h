@@ -1,8 +1,8 @@
 #pragma once
 
-#include <stdexcept>
 #include <vector>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/rgb.h"
 
 namespace rad {
@@ -15,7 +15,7 @@ struct ImageRgb {
 
   ImageRgb() = default;
   ImageRgb(int w, int h) : width(w), height(h), pixels(static_cast<size_t>(w) * h) {
-    if (w <= 0 || h <= 0) throw std::invalid_argument("image size must be positive");
+    RAD_CHECK_MSG(w > 0 && h > 0, "image size " + std::to_string(w) + "×" + std::to_string(h));
   }
   Rgb& at(int x, int y) { return pixels[static_cast<size_t>(y) * width + x]; }
   const Rgb& at(int x, int y) const { return pixels[static_cast<size_t>(y) * width + x]; }

@@ -7,8 +7,8 @@
 #include <chrono>
 #include <climits>
 #include <cmath>
-#include <stdexcept>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
 #include "radiosity/core/rng.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
@@ -24,9 +24,9 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 AnalyticPatchShots::AnalyticPatchShots(const PatchMesh& mesh, const RayCaster& rays,
                                        AnalyticOptions options)
     : mesh_(mesh), rays_(rays), options_(options), rows_(mesh.shooterCount()) {
-  if (options_.receiverPoints != 1 && options_.receiverPoints != 3)
-    throw std::invalid_argument("receiver points must be 1 or 3");
-  if (options_.shadowRays < 1) throw std::invalid_argument("shadow rays must be >= 1");
+  RAD_CHECK_MSG(options_.receiverPoints == 1 || options_.receiverPoints == 3,
+                "receiver points must be 1 or 3");
+  RAD_CHECK_GE(options_.shadowRays, 1);
   meshChanged();
   for (int s = 0; s < mesh.shooterCount(); ++s) {
     const auto c = mesh.shooterCorners(s);

@@ -3,8 +3,8 @@
 #include <tbb/parallel_for.h>
 
 #include <chrono>
-#include <stdexcept>
 
+#include "radiosity/core/errors.h"
 #include "radiosity/core/progress.h"
 
 namespace rad {
@@ -48,7 +48,7 @@ void FormFactorCache::computeRows(const std::vector<bool>& needed, Progress* pro
 Eigen::SparseMatrix<double, Eigen::RowMajor> FormFactorCache::matrix() const {
   for (const auto& row : rows_)
     if (row && !row->tinted.empty())
-      throw std::invalid_argument(
+      throw InputError(
           "form factors through mirrors or glass are tinted per channel; the gathering solvers "
           "use one matrix for all channels: use --solver progressive for this scene");
   std::vector<Eigen::Triplet<double>> entries;

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <stdexcept>
+#include <string>
 
+#include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
 #include "radiosity/core/rng.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 
@@ -20,10 +22,9 @@ double FormFactorRow::valueFor(int target) const {
 HemisphereFormFactors::HemisphereFormFactors(const PatchMesh& mesh, const RayCaster& rays,
                                              HemisphereOptions options)
     : mesh_(mesh), rays_(rays), options_(options) {
-  if (options_.raysPerElement < 1) throw std::invalid_argument("rays per element must be >= 1");
-  if (!options_.rayMultiplier.empty() &&
-      options_.rayMultiplier.size() != static_cast<size_t>(mesh.elementCount()))
-    throw std::invalid_argument("one ray multiplier per element expected");
+  RAD_CHECK_GE(options_.raysPerElement, 1);
+  if (!options_.rayMultiplier.empty())
+    RAD_CHECK_EQ(options_.rayMultiplier.size(), mesh.elementCount());  // one per element
   normals_.resize(mesh.elementCount());
   frontNormals_.resize(3 * static_cast<size_t>(mesh.elementCount()));
   for (int e = 0; e < mesh.elementCount(); ++e) {
@@ -119,8 +120,9 @@ HemisphereFormFactors::RowSampler::RowSampler(const HemisphereFormFactors& owner
   Rng rng(streamKey(owner.options_.seed, static_cast<uint64_t>(element)));
   key_ = (static_cast<uint64_t>(rng.next()) << 32) | rng.next();
   grid_ = static_cast<int>(std::sqrt(static_cast<double>(count_)));
-  if (grid_ >= 1 << 15)
-    throw std::invalid_argument("a form-factor row must have fewer than 2^30 rays");
+  if (grid_ >= 1 << 15)  // --rays at its limit, times an emitter's multiplier of up to 64
+    throw InputError("a form-factor row of " + std::to_string(count_) +
+                     " rays: it must have fewer than 2^30; lower --rays");
   inverseGrid_ = 1.0 / grid_;
   const int cells = grid_ * grid_;
   positionCell_.resize(cells);

@@ -4,7 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+
+#include "radiosity/core/check.h"
 
 namespace rad {
 namespace {
@@ -59,8 +60,8 @@ void drawText(ImageRgb& sheet, int x0, int y0, const std::string& text, int scal
 
 ImageRgb composeContactSheet(const std::vector<SheetTile>& tiles, const ToneMap& toneMap,
                              int columns) {
-  if (tiles.empty()) throw std::invalid_argument("a contact sheet needs at least one tile");
-  if (columns < 1) throw std::invalid_argument("a contact sheet needs at least one column");
+  RAD_CHECK_MSG(!tiles.empty(), "a contact sheet needs at least one tile");
+  RAD_CHECK_GE(columns, 1);
   columns = std::min<int>(columns, static_cast<int>(tiles.size()));
   const int rows = (static_cast<int>(tiles.size()) + columns - 1) / columns;
   int cellW = 0, cellH = 0, widestLine = 0;

@@ -3,16 +3,15 @@
 #include <cmath>
 #include <ios>
 #include <limits>
-#include <stdexcept>
 #include <string>
+
+#include "radiosity/core/check.h"
 
 namespace rad {
 
 void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vector<Rgb>& radiosity) {
   const int count = mesh.elementCount();
-  if (static_cast<int>(radiosity.size()) != count)
-    throw std::invalid_argument("writeElementsCsv: " + std::to_string(radiosity.size()) +
-                                " radiosity values for " + std::to_string(count) + " elements");
+  RAD_CHECK_EQ(radiosity.size(), count);
 
   // Save and restore the caller's formatting: the stream may be shared with other writers.
   const std::ios_base::fmtflags flags = out.flags();

@@ -14,7 +14,7 @@ namespace rad {
 // c = centroid, n = unit front normal; B = radiosity (W·m⁻²) exactly as given; L = B/π, the
 // outgoing radiance (W·m⁻²·sr⁻¹) of the Lambertian element. Doubles are written with 17
 // significant digits so they read back bit-exact. The stream's formatting state is restored.
-// `radiosity` has one entry per element; throws std::invalid_argument otherwise.
+// `radiosity` has one entry per element (RAD_CHECK: CheckFailure otherwise).
 void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vector<Rgb>& radiosity);
 
 }  // namespace rad

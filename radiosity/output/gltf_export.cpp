@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 
 namespace rad {
@@ -70,8 +71,7 @@ class GlbBuilder {
 void writeBakedGlb(std::ostream& out, const BakedMesh& mesh,
                    const std::vector<std::uint8_t>* lightmapPng, const ToneMap& toneMap) {
   const bool lightmap = lightmapPng != nullptr;
-  if (lightmap && mesh.uvs.size() != mesh.positions.size())
-    throw std::invalid_argument("writeBakedGlb: a lightmap needs one UV per vertex");
+  if (lightmap) RAD_CHECK_EQ(mesh.uvs.size(), mesh.positions.size());  // one UV per vertex
   GlbBuilder b;
   tinygltf::Model& model = b.model();
   model.asset.version = "2.0";

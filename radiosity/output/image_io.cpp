@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "radiosity/core/atomic_file.h"
+#include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 
 // stb's PNG encoder, compiled privately into this file only.
@@ -54,6 +55,7 @@ ImageRgb readExr(const std::string& path) {
     Imf::InputFile in(path.c_str());
     const Imath::Box2i window = in.header().dataWindow();
     const int w = window.max.x - window.min.x + 1, h = window.max.y - window.min.y + 1;
+    if (w <= 0 || h <= 0) throw InputError(path, 0, "EXR file has an empty data window");
     const char* names[3] = {"R", "G", "B"};
     for (const char* name : names)
       if (!in.header().channels().findChannel(name))
@@ -76,6 +78,8 @@ ImageRgb readExr(const std::string& path) {
     return image;
   } catch (const InputError&) {
     throw;
+  } catch (const CheckFailure&) {
+    throw;  // a bug here, not a bad file
   } catch (const std::exception& e) {
     throw InputError(path, 0, std::string("not a readable EXR file: ") + e.what());
   }

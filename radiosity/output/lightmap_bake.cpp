@@ -8,6 +8,7 @@
 #include <string>
 
 #include "meshing/lightmap_charts.h"
+#include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
 
 namespace rad {
@@ -65,12 +66,9 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
                       const VertexInterpolation& interpolation,
                       const std::vector<Rgb>& vertexRadiance, int dilationRadius,
                       const TexelEvaluator& evaluate) {
-  if (dilationRadius < 0 || dilationRadius > layout.padding)
-    throw std::invalid_argument("dilation radius " + std::to_string(dilationRadius) +
-                                " exceeds the padding of " + std::to_string(layout.padding) +
-                                " texels: charts would bleed into each other");
-  if (static_cast<int>(vertexRadiance.size()) != interpolation.vertexCount())
-    throw std::invalid_argument("bakeLightmap: one radiance value per output vertex expected");
+  RAD_CHECK_GE(dilationRadius, 0);
+  RAD_CHECK_LE(dilationRadius, layout.padding);  // more: charts would bleed into each other
+  RAD_CHECK_EQ(vertexRadiance.size(), interpolation.vertexCount());  // one per output vertex
   const int width = layout.width, height = layout.height;
   Lightmap map;
   map.radiance = ImageRgb(width, height);

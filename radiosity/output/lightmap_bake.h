@@ -42,7 +42,7 @@ struct Lightmap {
 // inside an element read only its chart. Then `dilationRadius` rings of empty texels around each
 // chart (at most the layout's padding) take the mean of their filled neighbours of one chart —
 // never of two; a texel next to the own texels of two charts stays empty. Throws
-// std::invalid_argument when dilationRadius exceeds the padding.
+// CheckFailure (RAD_CHECK) when dilationRadius exceeds the padding.
 //
 // With `evaluate`, every texel an element covers (fully or in part) takes evaluate(element,
 // barycentric, texel) instead of the interpolated value — e.g. a per-texel final gather — computed

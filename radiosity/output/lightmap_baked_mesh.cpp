@@ -1,17 +1,17 @@
 #include "radiosity/output/lightmap_baked_mesh.h"
 
 #include <map>
-#include <stdexcept>
 #include <tuple>
 #include <utility>
+
+#include "radiosity/core/check.h"
 
 namespace rad {
 
 BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interpolation,
                         const std::vector<Rgb>& vertexRadiance, const LightmapLayout* layout,
                         const std::vector<std::string>& materialNames) {
-  if (static_cast<int>(vertexRadiance.size()) != interpolation.vertexCount())
-    throw std::invalid_argument("makeBakedMesh: one radiance value per output vertex expected");
+  RAD_CHECK_EQ(vertexRadiance.size(), interpolation.vertexCount());  // one per output vertex
   BakedMesh out;
   out.materialNames = materialNames;
   // (interpolated vertex, chart, lightmap UV) → output vertex. Within a generated chart a vertex
@@ -35,8 +35,8 @@ BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interp
     }
     out.triangles.push_back(tri);
     const int m = mesh.material(e);
-    if (m < 0 || m >= static_cast<int>(materialNames.size()))
-      throw std::invalid_argument("makeBakedMesh: material index without a name");
+    RAD_CHECK_MSG(m >= 0 && m < static_cast<int>(materialNames.size()),
+                  "makeBakedMesh: material index without a name");
     out.materials.push_back(m);
   }
   return out;

@@ -1,7 +1,8 @@
 #include "radiosity/output/obj_export.h"
 
 #include <cstdio>
-#include <stdexcept>
+
+#include "radiosity/core/check.h"
 
 namespace rad {
 namespace {
@@ -17,8 +18,7 @@ std::string num(double x) {
 
 void writeBakedObj(std::ostream& obj, std::ostream& mtl, const BakedMesh& mesh,
                    const std::string& mtlName, const std::string& texture) {
-  if (mesh.uvs.size() != mesh.positions.size())
-    throw std::invalid_argument("writeBakedObj: the mesh has no lightmap UVs");
+  RAD_CHECK_EQ(mesh.uvs.size(), mesh.positions.size());  // lightmap UVs, one per vertex
   mtl << "# radiosity bake: the lightmap holds outgoing radiance, tone-mapped; shown unlit (illum "
          "0)\n";
   for (const std::string& name : mesh.materialNames)

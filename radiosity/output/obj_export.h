@@ -11,7 +11,7 @@ namespace rad {
 // expects: v = 1 − glTF v). Each scene material becomes an MTL material that shows the
 // lightmap unlit: `illum 0` (colour = Kd, no lighting) with Kd 1 and `map_Kd` = `texture`
 // (a file name relative to the MTL). `mtlName` is the MTL's file name as the OBJ references it.
-// Throws std::invalid_argument when the mesh has no lightmap UVs.
+// The mesh must have lightmap UVs (RAD_CHECK: CheckFailure otherwise).
 void writeBakedObj(std::ostream& obj, std::ostream& mtl, const BakedMesh& mesh,
                    const std::string& mtlName, const std::string& texture);
 

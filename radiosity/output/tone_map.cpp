@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "radiosity/core/check.h"
 
 namespace rad {
 
@@ -18,16 +19,15 @@ double srgbEncode(double linear) {
 
 ToneMap ToneMap::autoExposure(const std::vector<Rgb>& radiance,
                               const std::vector<double>& weights) {
-  if (!weights.empty() && weights.size() != radiance.size())
-    throw std::invalid_argument("ToneMap::autoExposure: " + std::to_string(weights.size()) +
-                                " weights for " + std::to_string(radiance.size()) + " values");
+  if (!weights.empty()) RAD_CHECK_EQ(weights.size(), radiance.size());
   std::vector<std::pair<double, double>> samples;  // (luminance, weight)
   samples.reserve(radiance.size());
   double total = 0;
   for (size_t i = 0; i < radiance.size(); ++i) {
     const double w = weights.empty() ? 1.0 : weights[i];
-    if (!(w >= 0) || !std::isfinite(w))
-      throw std::invalid_argument("ToneMap::autoExposure: negative or non-finite weight");
+    RAD_CHECK_MSG(w >= 0 && std::isfinite(w), "ToneMap::autoExposure: weight " + std::to_string(w) +
+                                                  " of value " + std::to_string(i) +
+                                                  " is negative or not finite");
     const double y = radiance[i].luminance();
     // Black surfaces would drag the percentile towards zero and over-expose everything else.
     if (!(y > 0) || !std::isfinite(y) || w == 0) continue;

@@ -26,7 +26,7 @@ struct ToneMap {
   // and the chosen value is the smallest luminance at which the cumulative weight reaches 99% of
   // the total. Only entries with finite luminance > 0 and weight > 0 take part; if none do, the
   // exposure is 1. `weights` is empty (all entries weigh the same) or one per radiance entry;
-  // throws std::invalid_argument on a size mismatch or a negative or non-finite weight.
+  // a size mismatch or a negative or non-finite weight is a bug (RAD_CHECK: CheckFailure).
   static ToneMap autoExposure(const std::vector<Rgb>& radiance, const std::vector<double>& weights);
 
   // The operator above on one radiance value; NaN channels give 0.

@@ -6,8 +6,9 @@
 #include <ios>
 #include <limits>
 #include <sstream>
-#include <stdexcept>
 #include <string>
+
+#include "radiosity/core/check.h"
 
 namespace rad {
 namespace {
@@ -69,10 +70,7 @@ void writeVertexColorsPly(std::ostream& out, const VertexInterpolation& interpol
                           const ToneMap& toneMap) {
   const int vertexCount = interpolation.vertexCount();
   const int faceCount = mesh.elementCount();
-  if (static_cast<int>(radianceVertex.size()) != vertexCount)
-    throw std::invalid_argument("writeVertexColorsPly: " + std::to_string(radianceVertex.size()) +
-                                " radiance values for " + std::to_string(vertexCount) +
-                                " output vertices");
+  RAD_CHECK_EQ(radianceVertex.size(), vertexCount);
 
   // Header in its own stream so the caller's formatting state is left alone.
   std::ostringstream header;

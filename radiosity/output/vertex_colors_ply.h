@@ -30,7 +30,7 @@ std::vector<Rgb> interpolateVertexRadiance(
 // (linear outgoing radiance, W·m⁻²·sr⁻¹) and uchar red green blue (the radiance through
 // `toneMap`, sRGB). One triangle per element, with int indices into the output vertices; header
 // comments state the units and the exposure. Open `out` in binary mode (AtomicFile(path, true)).
-// Throws std::invalid_argument when `radianceVertex` does not have one entry per output vertex.
+// `radianceVertex` has one entry per output vertex (RAD_CHECK: CheckFailure otherwise).
 void writeVertexColorsPly(std::ostream& out, const VertexInterpolation& interpolation,
                           const PatchMesh& mesh, const std::vector<Rgb>& radianceVertex,
                           const ToneMap& toneMap);

@@ -6,8 +6,8 @@
 
 #include <chrono>
 #include <memory>
-#include <stdexcept>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
 #include "radiosity/render/sobol_sampler.h"
 
@@ -25,7 +25,7 @@ void storePixelMean(RenderOutput& out, int x, int y, const Rgb& sum, const Rgb& 
 
 RenderOutput renderImage(const Camera& camera, const Integrator& integrator,
                          const RenderSettings& settings) {
-  if (settings.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be >= 1");
+  RAD_CHECK_GE(settings.samplesPerPixel, 1);  // the commands refuse --spp below 1
   const auto start = std::chrono::steady_clock::now();
   const CameraRays rays(camera);
   RenderOutput out;

@@ -6,8 +6,8 @@
 
 #include <chrono>
 #include <memory>
-#include <stdexcept>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
 #include "radiosity/render/sobol_sampler.h"
 
@@ -29,7 +29,7 @@ void addSplats(RenderOutput& out, const ImageRgb& sum, const ImageRgb& sumSquare
 
 PathRenderOutput renderPathImage(const Camera& camera, const PathIntegrator& integrator,
                                  const RenderSettings& settings, const PathBinning* binning) {
-  if (settings.samplesPerPixel < 1) throw std::invalid_argument("samples per pixel must be >= 1");
+  RAD_CHECK_GE(settings.samplesPerPixel, 1);  // the commands refuse --spp below 1
   const auto start = std::chrono::steady_clock::now();
   const CameraRays rays(camera);
   const int n = settings.samplesPerPixel, bins = binning ? binning->binCount() : 0;

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 
 namespace rad {
@@ -29,9 +30,10 @@ RayCaster::RayCaster(const PatchMesh& mesh, const VertexMotion* motion) {
 }
 
 void RayCaster::build(const PatchMesh& mesh, const VertexMotion* motion) {
-  if (motion && (static_cast<int>(motion->open.size()) != mesh.vertexCount() ||
-                 static_cast<int>(motion->close.size()) != mesh.vertexCount()))
-    throw std::invalid_argument("VertexMotion needs one displacement per mesh vertex");
+  if (motion) {  // one displacement per mesh vertex
+    RAD_CHECK_EQ(motion->open.size(), mesh.vertexCount());
+    RAD_CHECK_EQ(motion->close.size(), mesh.vertexCount());
+  }
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw RuntimeFailure("cannot create the Embree device");
   rtcSetDeviceErrorFunction(device_, onEmbreeError, nullptr);

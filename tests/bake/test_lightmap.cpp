@@ -9,6 +9,7 @@
 #include "meshing/lightmap_charts.h"
 #include "meshing/lightmap_packing.h"
 #include "meshing/vertex_interpolation.h"
+#include "radiosity/core/check.h"
 #include "radiosity/output/lightmap_bake.h"
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/scene/obj_loader.h"
@@ -153,8 +154,7 @@ TEST(LightmapBake, PaddingAtLeastDilationAndGeometryInsideItsRect) {
       EXPECT_LE(p.y(), r.y + r.height - b.layout.padding + 1e-9);
     }
   }
-  EXPECT_THROW(bakeLightmap(b.mesh, b.layout, b.interpolation, b.vertexRadiance, 4),
-               std::invalid_argument);
+  EXPECT_THROW(bakeLightmap(b.mesh, b.layout, b.interpolation, b.vertexRadiance, 4), CheckFailure);
   // With --texel-size the density is what was asked for.
   EXPECT_DOUBLE_EQ(b.layout.texelSize, 0.01);
 }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "meshing/patch_mesh.h"
+#include "radiosity/core/check.h"
 
 namespace rad {
 namespace {
@@ -61,8 +62,8 @@ TEST(PatchMeshUvs, MeshWithoutUvsSaysSoAndMixedInputIsRefused) {
   EXPECT_FALSE(plain.hasUvs());
   EXPECT_THROW(plain.cornerUvs(0), std::logic_error);
   EXPECT_THROW(PatchMesh(p, {{{0, 1, 2}, 0, {{0, 0}, {1, 0}, {1, 1}}}, {{0, 2, 3}, 0, {}}}),
-               std::invalid_argument);
-  EXPECT_THROW(PatchMesh(p, {{{0, 1, 2}, 0, {{0, 0}, {1, 0}}}}), std::invalid_argument);
+               rad::CheckFailure);
+  EXPECT_THROW(PatchMesh(p, {{{0, 1, 2}, 0, {{0, 0}, {1, 0}}}}), rad::CheckFailure);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "meshing/patch_mesh.h"
 #include "meshing/vertex_interpolation.h"
+#include "radiosity/core/check.h"
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/output/tone_map.h"
 #include "radiosity/output/vertex_colors_ply.h"
@@ -246,8 +247,8 @@ TEST(ToneMap, AutoExposureIgnoresBlack) {
 }
 
 TEST(ToneMap, AutoExposureRejectsBadWeights) {
-  EXPECT_THROW(ToneMap::autoExposure({Rgb::all(1)}, {1.0, 2.0}), std::invalid_argument);
-  EXPECT_THROW(ToneMap::autoExposure({Rgb::all(1)}, {-1.0}), std::invalid_argument);
+  EXPECT_THROW(ToneMap::autoExposure({Rgb::all(1)}, {1.0, 2.0}), CheckFailure);
+  EXPECT_THROW(ToneMap::autoExposure({Rgb::all(1)}, {-1.0}), CheckFailure);
 }
 
 TEST(ToneMap, ToSrgb8KnownValues) {
@@ -344,7 +345,7 @@ TEST(ElementsCsv, MaterialsPatchesAndNormalsOfAnL) {
 
 TEST(ElementsCsv, RejectsAWrongNumberOfValues) {
   std::ostringstream out;
-  EXPECT_THROW(writeElementsCsv(out, unitSquare(), std::vector<Rgb>(3)), std::invalid_argument);
+  EXPECT_THROW(writeElementsCsv(out, unitSquare(), std::vector<Rgb>(3)), CheckFailure);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -489,8 +490,7 @@ TEST(VertexColorsPly, RejectsAWrongNumberOfValues) {
   const PatchMesh mesh = unitSquare();
   const VertexInterpolation vi(mesh);
   std::ostringstream out;
-  EXPECT_THROW(writeVertexColorsPly(out, vi, mesh, std::vector<Rgb>(3), ToneMap{}),
-               std::invalid_argument);
+  EXPECT_THROW(writeVertexColorsPly(out, vi, mesh, std::vector<Rgb>(3), ToneMap{}), CheckFailure);
 }
 
 }  // namespace

@@ -1,0 +1,39 @@
+// How the command line turns what a command throws into its exit code (runCommand, as main.cpp
+// runs every subcommand): a failed internal check is a bug (3), bad input is the user's (1).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "radiosity/app/exit_codes.h"
+#include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
+
+namespace rad {
+namespace {
+
+TEST(ExitCodes, SuccessIsZero) {
+  EXPECT_EQ(runCommand([] {}), kExitSuccess);
+}
+
+TEST(ExitCodesDeathTest, FailedCheckExits3AsABug) {
+  EXPECT_EXIT(std::exit(runCommand([] {
+                const int vertices = 4, values = 3;
+                RAD_CHECK_EQ(values, vertices);
+              })),
+              ::testing::ExitedWithCode(3),
+              "internal error \\(a bug, please report it\\): bug in radiosity: .*test_exit_codes"
+              "\\.cpp:[0-9]+: check failed: values == vertices \\(3 vs 4\\)");
+}
+
+TEST(ExitCodesDeathTest, InputErrorStillExits1) {
+  EXPECT_EXIT(std::exit(runCommand([] { throw InputError("scene.obj", 7, "unknown material"); })),
+              ::testing::ExitedWithCode(1), "error: scene.obj:7: unknown material");
+}
+
+TEST(ExitCodesDeathTest, OtherFailuresExit1) {
+  EXPECT_EXIT(std::exit(runCommand([] { throw RuntimeFailure("disk full"); })),
+              ::testing::ExitedWithCode(1), "error: disk full");
+}
+
+}  // namespace
+}  // namespace rad
