@@ -1,8 +1,8 @@
 #include "radiosity/pipeline/form_factor_stage.h"
 
-#include <stdexcept>
 #include <string>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/solvers/gathering_solvers.h"
@@ -48,12 +48,12 @@ SparseRows FormFactorStage::gatheringMatrix() {
 }
 
 const std::vector<char>& FormFactorStage::partlyShadowed() const {
-  if (!analytic_) throw std::logic_error("shadow boundaries are known to analytic factors only");
+  RAD_CHECK_MSG(analytic_ != nullptr, "shadow boundaries are known to analytic factors only");
   return analytic_->partlyShadowed();
 }
 
 void FormFactorStage::meshChanged(const std::vector<int>& changed) {
-  if (!analytic_) throw std::logic_error("refinement needs analytic form factors");
+  RAD_CHECK_MSG(analytic_ != nullptr, "refinement needs analytic form factors");
   analytic_->meshChanged(changed);
 }
 

@@ -1,10 +1,10 @@
 #include "radiosity/pipeline/refinement_stage.h"
 
 #include <array>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/log.h"
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/solvers/refinable_solver.h"
@@ -28,7 +28,7 @@ bool AdaptiveRefinement::refine(int pass, Solution& solution, FormFactorStage& f
                                 Solver& solver, SolveReport& report) {
   if (!enabled_ || pass == passes_) return false;
   auto* refinable = dynamic_cast<RefinableSolver*>(&solver);
-  if (!refinable) throw std::logic_error("adaptive refinement needs a refinable solver");
+  RAD_CHECK_MSG(refinable != nullptr, "adaptive refinement needs a refinable solver");
   PatchMesh& mesh = *solution.mesh;
   std::vector<int> selected;
   if (receiverPoints_ == 3) {

@@ -9,7 +9,8 @@ namespace rad {
 
 // Resource limits, decided before the work starts, so absurd options or scenes fail at once
 // with a clear message instead of running out of memory hours later.
-inline constexpr int kMaxRaysPerElement = 1 << 24;  // × 64 for emitter rows still fits an int
+// × 64 for emitter rows stays below 2^30, the most rays one row can hold.
+inline constexpr int kMaxRaysPerElement = (1 << 24) - 1;
 inline constexpr double kMaxElements = 4e6;
 inline constexpr double kMaxCoordinate = 1e15;
 
