@@ -1,7 +1,7 @@
 #!/bin/sh
 # Caustics by path tracing and by BDPT at equal samples per pixel: the image mean, the mean
 # per-pixel variance and the render time (render.json) of the full image and of its LS+DE part,
-# on the Cornell box with the glass sphere and mirror. Prints a Markdown table (README
+# on the Cornell box with the glass sphere and mirror. Prints a Markdown table (docs/benchmarks.md,
 # "Bidirectional path tracing") and writes bench/path_types_results/caustics_bdpt_vs_path.png,
 # the two LS+DE images side by side at BDPT's exposure.
 # Usage: bench/path_types.sh [BUILD_DIR] [SPP] [SIZE]

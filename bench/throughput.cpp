@@ -19,8 +19,8 @@
 
 #include "radiosity/core/log.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
+#include "radiosity/pipeline/mesh_stage.h"
 #include "radiosity/scene/obj_loader.h"
-#include "radiosity/scene/scene_mesh.h"
 #include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
@@ -43,8 +43,9 @@ struct Setup {
     const char* path = std::getenv("RADIOSITY_BENCH_SCENE");
     const char* elements = std::getenv("RADIOSITY_BENCH_ELEMENTS");
     scene = loadObjScene(path ? path : RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
-    mesh = std::make_unique<PatchMesh>(buildPatchMesh(scene));
-    mesh->subdivideUniform(mesh->totalArea() / (elements ? std::atof(elements) : 1500));
+    SolveOptions options;  // the solve's mesh: hemisphere rows, uniform elements
+    if (elements) options.targetElements = std::atoi(elements);
+    mesh = meshScene(scene, options).mesh;
     caster = std::make_unique<RayCaster>(*mesh);
     // No emitter multipliers: every row has the same ray count, so the rates compare like for like.
     method = std::make_unique<HemisphereFormFactors>(*mesh, *caster,
