@@ -212,7 +212,7 @@ void SolutionViewer::resetCamera() {
   const double* viewport = scene_->GetViewport();
   const double aspect = (viewport[2] - viewport[0]) * options_.width /
                         ((viewport[3] - viewport[1]) * options_.height);
-  CameraSpec c;
+  Camera c;
   if (options_.camera) {
     c = *options_.camera;
   } else {
@@ -242,12 +242,7 @@ void SolutionViewer::resetCamera() {
       if (facing[k] > facing[best] + 1e-9 * std::abs(facing[best])) best = k;
     c = frameBounds(lo, hi, axes[best], aspect);
   }
-  vtkCamera* camera = scene_->GetActiveCamera();
-  camera->SetPosition(c.position.data());
-  camera->SetFocalPoint(c.lookAt.data());
-  camera->SetViewUp(c.up.data());
-  camera->SetViewAngle(c.vfovDegrees);
-  camera->OrthogonalizeViewUp();
+  applyToView(c, *scene_->GetActiveCamera());
   scene_->ResetCameraClippingRange();
 }
 

@@ -11,6 +11,7 @@
 #include "radiosity/formfactors/analytic_patch_shots.h"
 #include "radiosity/formfactors/form_factor_cache.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
+#include "radiosity/scene/camera.h"
 #include "radiosity/solvers/gathering_solvers.h"
 #include "radiosity/solvers/progressive_solver.h"
 #include "radiosity/visibility/ray_caster.h"
@@ -181,8 +182,8 @@ void runView(const ViewArgs& args, SolveOptions options) {
   };
   auto cameraFor = [&](const std::string& scenePath) {
     if (!args.cameraFromScene) return;
-    view.camera = readCameraSidecar(scenePath);
-    if (!view.camera) logInfo("no " + viewCameraFile(scenePath) + ": framing the bounding box");
+    view.camera = findSceneCamera(scenePath);
+    if (!view.camera) logInfo("no " + cameraSidecarPath(scenePath) + ": framing the bounding box");
   };
 
   if (std::filesystem::is_directory(args.input)) {
