@@ -35,7 +35,7 @@
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
 #include "radiosity/output/vertex_colors_ply.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 
 namespace {
@@ -201,7 +201,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   setLogLevel(LogLevel::Quiet);
-  const Scene scene = loadObjScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
+  const Scene scene = loadScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
   auto t0 = std::chrono::steady_clock::now();
   const SolveResult reference = solveReference(scene, referenceElements, 8, 64, 1);
   std::fprintf(stderr, "reference: %d elements, %d shooting patches, %.1f s\n",

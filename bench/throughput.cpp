@@ -20,7 +20,7 @@
 #include "radiosity/app/solve_job.h"
 #include "radiosity/core/log.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 #include "radiosity/visibility/ray_caster.h"
 
@@ -43,7 +43,7 @@ struct Setup {
     setLogLevel(LogLevel::Quiet);
     const char* path = std::getenv("RADIOSITY_BENCH_SCENE");
     const char* elements = std::getenv("RADIOSITY_BENCH_ELEMENTS");
-    scene = loadObjScene(path ? path : RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
+    scene = loadScene(path ? path : RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
     mesh = std::make_unique<PatchMesh>(buildPatchMesh(scene));
     mesh->subdivideUniform(mesh->totalArea() / (elements ? std::atof(elements) : 1500));
     caster = std::make_unique<RayCaster>(*mesh);

@@ -5,7 +5,7 @@
 
 #include "radiosity/app/saved_solution.h"
 #include "radiosity/core/log.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 
 namespace rad {
@@ -34,7 +34,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   if (method.needsSolve) {
     if (!solved_) {
       const auto t = Clock::now();
-      Scene scene = loadObjScene(solve_.scenePath);
+      Scene scene = loadScene(solve_.scenePath);
       requireEmitter(scene);
       std::string whyNot = "--fresh-solve";
       std::optional<SolveResult> saved;
@@ -59,7 +59,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   }
 
   if (!scene_) {
-    scene_ = std::make_unique<Scene>(loadObjScene(solve_.scenePath));
+    scene_ = std::make_unique<Scene>(loadScene(solve_.scenePath));
     requireEmitter(*scene_);
     mesh_ = std::make_unique<PatchMesh>(buildPatchMesh(*scene_));
     skip("radiosity solve", "--method " + method.name + " needs only the scene's triangles");

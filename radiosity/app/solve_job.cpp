@@ -16,7 +16,7 @@
 #include "radiosity/formfactors/analytic_patch_shots.h"
 #include "radiosity/formfactors/form_factor_cache.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 #include "radiosity/solvers/gathering_solvers.h"
 #include "radiosity/solvers/progressive_solver.h"
@@ -201,7 +201,7 @@ void checkPatchAreas(const PatchMesh& mesh, const Scene& scene) {
 
 SolveResult runSolve(const SolveOptions& options) {
   const auto start = Clock::now();
-  Scene scene = loadObjScene(options.scenePath);
+  Scene scene = loadScene(options.scenePath);
   const double loadSeconds = since(start);
   SolveResult result = solveScene(std::move(scene), options);
   result.times.load = loadSeconds;
