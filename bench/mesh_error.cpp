@@ -36,7 +36,7 @@
 #include "radiosity/core/log.h"
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/pipeline/solve_pipeline.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 
 namespace {
@@ -176,7 +176,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   setLogLevel(LogLevel::Quiet);
-  const Scene scene = loadObjScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
+  const Scene scene = loadScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
   auto t0 = std::chrono::steady_clock::now();
   const SolveResult reference = solveReference(scene, referenceElements, 8, 64, 1);
   std::fprintf(stderr, "reference: %d elements, %d shooting patches, %.1f s\n",

@@ -20,7 +20,7 @@
 #include "radiosity/core/log.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
 #include "radiosity/pipeline/mesh_stage.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
@@ -42,7 +42,7 @@ struct Setup {
     setLogLevel(LogLevel::Quiet);
     const char* path = std::getenv("RADIOSITY_BENCH_SCENE");
     const char* elements = std::getenv("RADIOSITY_BENCH_ELEMENTS");
-    scene = loadObjScene(path ? path : RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
+    scene = loadScene(path ? path : RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
     SolveOptions options;  // the solve's mesh: hemisphere rows, uniform elements
     if (elements) options.targetElements = std::atoi(elements);
     mesh = meshScene(scene, options).mesh;

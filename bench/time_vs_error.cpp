@@ -34,7 +34,7 @@
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/log.h"
 #include "radiosity/pipeline/solve_pipeline.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 
 namespace {
 
@@ -228,7 +228,7 @@ int main(int argc, char** argv) {
   setLogLevel(LogLevel::Quiet);
 
   try {
-    const Scene scene = loadObjScene(scenePath);
+    const Scene scene = loadScene(scenePath);
     const bool specular = scene.hasSpecular();
 
     // Reference, twice with different seeds: the second measures the reference's own noise.

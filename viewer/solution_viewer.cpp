@@ -257,7 +257,7 @@ void SolutionViewer::resetCamera() {
   const int* size = window_->GetSize();
   const double aspect = (viewport[2] - viewport[0]) * (size[0] > 0 ? size[0] : options_.width) /
                         ((viewport[3] - viewport[1]) * (size[1] > 0 ? size[1] : options_.height));
-  CameraSpec c;
+  Camera c;
   if (options_.camera) {
     c = *options_.camera;
   } else {
@@ -288,14 +288,10 @@ void SolutionViewer::resetCamera() {
     c = frameBounds(lo, hi, axes[best], aspect);
   }
   vtkCamera* camera = scene_->GetActiveCamera();
-  camera->SetPosition(c.position.data());
-  camera->SetFocalPoint(c.lookAt.data());
-  camera->SetViewUp(c.up.data());
-  camera->SetViewAngle(c.vfovDegrees);
+  applyToView(c, *camera);
   // A view narrower than high (a small window, the bar's strip and the panel taken off) keeps a
   // given camera's whole frame: its angle then spans the width.
   camera->SetUseHorizontalViewAngle(options_.camera && aspect < 1);
-  camera->OrthogonalizeViewUp();
   scene_->ResetCameraClippingRange();
 }
 

@@ -42,10 +42,10 @@ struct ViewerOptions {
   bool cullBackFaces = true;  // surfaces are one-sided: see into closed rooms
   bool help = true;           // the key overlay (interactive window)
   int width = 1280, height = 720;
-  std::optional<CameraSpec> camera;  // default: frame the bounding box
-  int pickElement = -1;              // draw this element's form-factor rays from the start
-  double tolerance = 0;              // drawn on the convergence chart
-  int stopAfter = -1;                // >= 0: the live solver restarted and stepped this often
+  std::optional<Camera> camera;  // default: frame the bounding box
+  int pickElement = -1;          // draw this element's form-factor rays from the start
+  double tolerance = 0;          // drawn on the convergence chart
+  int stopAfter = -1;            // >= 0: the live solver restarted and stepped this often
   std::string title = "radiosity";
 };
 

@@ -26,7 +26,7 @@
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/lightmap_uv_check.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
@@ -59,7 +59,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                      ": dilated texels of neighbouring charts would meet");
   // The scene's UVs are checked before the solve, so a bad layout fails in seconds.
   const auto loadStart = std::chrono::steady_clock::now();
-  Scene scene = loadObjScene(o.solve.scenePath);
+  Scene scene = loadScene(o.solve.scenePath);
   if (o.sceneUvs) checkLightmapUvs(scene);
   const double loadSeconds = since(loadStart);
   SolveResult result = solveOrReuse(std::move(scene), o.solve, {o.solutionDir, ""});

@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "radiosity/core/log.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 
 namespace rad {
@@ -33,7 +33,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   if (method.needsSolve) {
     if (!solved_) {
       const auto t = Clock::now();
-      Scene scene = loadObjScene(solve_.scenePath);
+      Scene scene = loadScene(solve_.scenePath);
       requireEmitter(scene);
       solved_ = std::make_unique<SolveResult>(solveOrReuse(std::move(scene), solve_, source_));
       for (const SkipNote& note : solved_->report.skipped)  // logged by solveOrReuse
@@ -51,7 +51,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   }
 
   if (!scene_) {
-    scene_ = std::make_unique<Scene>(loadObjScene(solve_.scenePath));
+    scene_ = std::make_unique<Scene>(loadScene(solve_.scenePath));
     requireEmitter(*scene_);
     mesh_ = std::make_unique<PatchMesh>(buildPatchMesh(*scene_));
     skip("radiosity solve", "--method " + method.name + " needs only the scene's triangles");

@@ -13,6 +13,7 @@
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/solve_pipeline.h"
+#include "radiosity/scene/camera.h"
 #include "radiosity/solvers/gathering_solvers.h"
 #include "radiosity/solvers/progressive_solver.h"
 #include "radiosity/solvers/solver_factory.h"
@@ -149,8 +150,8 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
   };
   auto cameraFor = [&](const std::string& scenePath) {
     if (!args.cameraFromScene) return;
-    view.camera = readCameraSidecar(scenePath);
-    if (!view.camera) logInfo("no " + viewCameraFile(scenePath) + ": framing the bounding box");
+    view.camera = findSceneCamera(scenePath);
+    if (!view.camera) logInfo("no " + cameraSidecarPath(scenePath) + ": framing the bounding box");
   };
 
   if (std::filesystem::is_directory(args.input)) {

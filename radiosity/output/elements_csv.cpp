@@ -1,13 +1,45 @@
 #include "radiosity/output/elements_csv.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <ios>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
 
 namespace rad {
+namespace {
+
+std::vector<std::string> splitCsv(const std::string& line) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::istringstream in(line);
+  while (std::getline(in, field, ',')) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
+
+double parseNumber(const std::string& text, const std::string& file, int line) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
+    throw InputError(file, line, "not a finite number: '" + text + "'");
+  return v;
+}
+
+int parseIndex(const std::string& text, const char* what, const std::string& file, int line) {
+  const double v = parseNumber(text, file, line);
+  if (!(v >= 0 && v <= std::numeric_limits<int>::max() && v == std::floor(v)))
+    throw InputError(file, line,
+                     std::string(what) + " must be a non-negative integer, not '" + text + "'");
+  return static_cast<int>(v);
+}
+
+}  // namespace
 
 void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vector<Rgb>& radiosity) {
   const int count = mesh.elementCount();
@@ -19,7 +51,7 @@ void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vecto
   out.unsetf(std::ios_base::floatfield);  // %g style: shortest of fixed/scientific at 17 digits
   out.precision(std::numeric_limits<double>::max_digits10);
 
-  out << "element,patch,material,area,cx,cy,cz,nx,ny,nz,B_r,B_g,B_b,L_r,L_g,L_b\n";
+  out << kElementsCsvHeader << '\n';
   for (int e = 0; e < count; ++e) {
     const Eigen::Vector3d c = mesh.centroid(e);
     const Eigen::Vector3d n = mesh.normal(e);
@@ -32,6 +64,47 @@ void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vecto
 
   out.flags(flags);
   out.precision(precision);
+}
+
+std::vector<ElementsCsvRow> readElementsCsv(std::istream& in, const std::string& source) {
+  std::string line;
+  // A file saved with CRLF line ends reads the same.
+  auto next = [&] {
+    if (!std::getline(in, line)) return false;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    return true;
+  };
+  if (!next() || line != kElementsCsvHeader)
+    throw InputError(
+        source, 1,
+        std::string("not an elements CSV (header missing; expected '") + kElementsCsvHeader + "')");
+  std::vector<ElementsCsvRow> rows;
+  for (int lineNumber = 2; next(); ++lineNumber) {
+    if (line.empty()) continue;
+    const std::vector<std::string> f = splitCsv(line);
+    if (f.size() != 16)
+      throw InputError(source, lineNumber,
+                       "expected 16 comma-separated fields, found " + std::to_string(f.size()));
+    auto number = [&](int k) { return parseNumber(f[k], source, lineNumber); };
+    ElementsCsvRow row;
+    row.line = lineNumber;
+    row.element = parseIndex(f[0], "element", source, lineNumber);
+    row.patch = parseIndex(f[1], "patch", source, lineNumber);
+    row.material = parseIndex(f[2], "material", source, lineNumber);
+    row.area = number(3);
+    row.centroid = Eigen::Vector3d(number(4), number(5), number(6));
+    row.normal = Eigen::Vector3d(number(7), number(8), number(9));
+    row.radiosity = Rgb(number(10), number(11), number(12));
+    row.radiance = Rgb(number(13), number(14), number(15));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::vector<ElementsCsvRow> readElementsCsv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "cannot open the elements CSV");
+  return readElementsCsv(in, path);
 }
 
 }  // namespace rad

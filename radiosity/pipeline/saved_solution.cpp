@@ -50,23 +50,6 @@ class Fingerprint {
   uint64_t hash_ = 0xcbf29ce484222325ull;
 };
 
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> fields;
-  std::string field;
-  std::istringstream in(line);
-  while (std::getline(in, field, ',')) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
-  return fields;
-}
-
-double parseNumber(const std::string& text, const std::string& file, int line) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-    throw InputError(file, line, "not a finite number: '" + text + "'");
-  return v;
-}
-
 }  // namespace
 
 std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
@@ -155,39 +138,28 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   const PatchMesh& mesh = *result.solution.mesh;
   const int count = mesh.elementCount();
   result.solution.radiosity.assign(count, Rgb());
-  std::ifstream in(csvPath);
-  if (!in) throw InputError(csvPath, 0, "cannot open the saved solution");
-  std::string line;
+  const std::vector<ElementsCsvRow> rows = readElementsCsv(csvPath);
   int lineNumber = 1;
-  if (!std::getline(in, line) || line.rfind("element,patch,material,area,cx,cy,cz", 0) != 0)
-    throw InputError(csvPath, 1, "not an elements CSV (header missing)");
   // Centroids are written with 17 significant digits: the re-meshed scene must give them back
   // to rounding, or the file belongs to another mesh.
   const double tolerance = 1e-9 * std::sqrt(mesh.totalArea());
   int element = 0;
-  while (std::getline(in, line)) {
-    ++lineNumber;
-    if (line.empty()) continue;
-    const std::vector<std::string> f = splitCsv(line);
-    if (f.size() != 16) throw InputError(csvPath, lineNumber, "expected 16 comma-separated fields");
+  for (const ElementsCsvRow& row : rows) {
+    lineNumber = row.line;
     if (element >= count)
       throw InputError(
           csvPath, lineNumber,
           "more elements than the re-meshed scene has (" + std::to_string(count) + ")");
-    if (parseNumber(f[0], csvPath, lineNumber) != element)
+    if (row.element != element)
       throw InputError(csvPath, lineNumber, "expected element " + std::to_string(element));
-    const Eigen::Vector3d c(parseNumber(f[4], csvPath, lineNumber),
-                            parseNumber(f[5], csvPath, lineNumber),
-                            parseNumber(f[6], csvPath, lineNumber));
-    if ((c - mesh.centroid(element)).norm() > tolerance)
+    if ((row.centroid - mesh.centroid(element)).norm() > tolerance)
       throw InputError(csvPath, lineNumber,
                        "element " + std::to_string(element) +
                            " lies elsewhere than in the re-meshed scene; delete the saved "
                            "solution to solve again");
-    Rgb b(parseNumber(f[10], csvPath, lineNumber), parseNumber(f[11], csvPath, lineNumber),
-          parseNumber(f[12], csvPath, lineNumber));
-    if (b.minComponent() < 0) throw InputError(csvPath, lineNumber, "negative radiosity");
-    result.solution.radiosity[element++] = b;
+    if (row.radiosity.minComponent() < 0)
+      throw InputError(csvPath, lineNumber, "negative radiosity");
+    result.solution.radiosity[element++] = row.radiosity;
   }
   if (element != count)
     throw InputError(csvPath, lineNumber,

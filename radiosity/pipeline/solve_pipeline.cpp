@@ -16,7 +16,7 @@
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/pipeline/refinement_stage.h"
 #include "radiosity/pipeline/resource_limits.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/solvers/progressive_solver.h"
 #include "radiosity/solvers/solver_factory.h"
 #include "radiosity/visibility/ray_caster.h"
@@ -79,7 +79,7 @@ void warnIfNotConverged(const IterationLimits& limits, const SolveReport& report
 
 SolveResult runSolve(const SolveOptions& options) {
   const auto start = Clock::now();
-  Scene scene = loadObjScene(options.scenePath);
+  Scene scene = loadScene(options.scenePath);
   const double loadSeconds = since(start);
   SolveResult result = solveScene(std::move(scene), options);
   result.report.times.load = loadSeconds;

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "radiosity/core/errors.h"
-#include "radiosity/render/json_file.h"
+#include "radiosity/scene/json_file.h"
 
 namespace rad {
 namespace {

@@ -261,11 +261,4 @@ Scene loadObjScene(const std::string& objPath) {
   return scene;
 }
 
-void requireEmitter(const Scene& scene) {
-  if (scene.emitterCount() > 0) return;
-  throw InputError(scene.sourcePath, 0,
-                   "no emitter: no polygon uses a material with positive Ke, so the scene would "
-                   "stay dark");
-}
-
 }  // namespace rad

@@ -10,10 +10,9 @@ namespace rad {
 // Throws InputError with "file:line: message" for: a missing/unreadable file, a missing MTL
 // library, `usemtl` of an unknown material, malformed or non-finite numbers, vertex indices out of
 // range, reflectance outside [0, 1), negative emission. Zero-area faces are skipped and counted.
-// A scene without any emitter is NOT an error here (the solver decides); see requireEmitter().
+// A scene without any emitter is NOT an error here (the solver decides); see requireEmitter()
+// (scene.h). Callers outside scene/ load through loadScene (scene_loader.h), which picks the
+// format.
 Scene loadObjScene(const std::string& objPath);
-
-// Throws InputError naming the scene file when no polygon emits.
-void requireEmitter(const Scene& scene);
 
 }  // namespace rad

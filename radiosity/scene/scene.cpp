@@ -1,5 +1,7 @@
 #include "radiosity/scene/scene.h"
 
+#include "radiosity/core/errors.h"
+
 namespace rad {
 
 int Scene::emitterCount() const {
@@ -21,6 +23,13 @@ int Scene::polygonsWithUvs() const {
   int count = 0;
   for (const ScenePolygon& polygon : polygons) count += !polygon.uvs.empty();
   return count;
+}
+
+void requireEmitter(const Scene& scene) {
+  if (scene.emitterCount() > 0) return;
+  throw InputError(scene.sourcePath, 0,
+                   "no emitter: no polygon uses a material with positive Ke, so the scene would "
+                   "stay dark");
 }
 
 }  // namespace rad

@@ -35,4 +35,7 @@ struct Scene {
   int polygonsWithUvs() const;  // polygons whose corners all have texture coordinates
 };
 
+// Throws InputError naming the scene file when no polygon emits (whatever format it came from).
+void requireEmitter(const Scene& scene);
+
 }  // namespace rad

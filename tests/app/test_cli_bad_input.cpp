@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
+#include <string>
+
 #include "tests/support/run_command.h"
 
 namespace rad {
@@ -56,6 +60,26 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 const std::string kCornell = std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box.obj";
+
+// A scene in a format radiosity does not read (here a binary glTF, as `radiosity bake` writes):
+// named as such, exit 1, no output directory.
+TEST(BadInput, UnsupportedSceneFormatIsNamedAndWritesNothing) {
+  const auto dir = testing::scratchPath("unsupported_format");
+  std::filesystem::create_directories(dir);
+  const auto glb = dir / "x.glb";
+  std::ofstream(glb, std::ios::binary)
+      << std::string("glTF\x02\x00\x00\x00\x20\x00\x00\x00", 12) << "binary glTF bytes";
+  const auto out = dir / "o";
+  const auto result = testing::runRadiosity("solve " + glb.string() + " --out " + out.string());
+  EXPECT_EQ(result.exitCode, 1) << result.stderrText;
+  EXPECT_NE(result.stderrText.find(glb.string() + ": unsupported scene format (binary glTF)"),
+            std::string::npos)
+      << result.stderrText;
+  EXPECT_NE(result.stderrText.find("radiosity reads OBJ (.obj)"), std::string::npos)
+      << result.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(out)) << "a failed run created " << out;
+  std::filesystem::remove_all(dir);
+}
 
 TEST(BadOptions, UnknownOptionIsAUsageError) {
   const auto out = testing::scratchPath("unknown_option");

@@ -1,7 +1,7 @@
-// libFuzzer target: the camera JSON sidecar (<scene>.camera.json, --camera FILE) through both of
-// its readers: loadCamera() (render) and, where the viewer is built, readCameraSidecar() (view
-// --camera-from-scene). A camera loadCamera accepts must give finite unit primary rays; one the
-// viewer accepts must be finite with a field of view in (0, 180) degrees.
+// libFuzzer target: the camera JSON sidecar (<scene>.camera.json, --camera FILE) through its one
+// reader, loadCamera() (radiosity/scene/camera.h), both directly (render --camera) and as the
+// scene's sidecar through findSceneCamera() (render, compare and view --camera-from-scene). A
+// camera it accepts must give finite unit primary rays, and both ways must agree.
 // Findings: crashes, sanitizer reports, and any exception other than InputError.
 #include <cmath>
 #include <cstdint>
@@ -12,10 +12,8 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/render/camera.h"
+#include "radiosity/scene/camera.h"
 #include "tests/fuzz/fuzz_temp_dir.h"
-#ifdef RADIOSITY_FUZZ_VIEWER
-#include "viewer/scene_camera.h"
-#endif
 
 namespace {
 
@@ -25,37 +23,41 @@ void check(bool ok, const char* what) {
   std::abort();
 }
 
-#ifdef RADIOSITY_FUZZ_VIEWER
-// The viewer finds the sidecar next to the scene: <dir>/scene.obj -> <dir>/scene.camera.json.
-void viewerSidecar(const std::string& cameraPath) {
+// The sidecar next to the scene: <dir>/scene.obj -> <dir>/scene.camera.json. Returns whether it
+// was accepted.
+bool sceneSidecar(const std::string& cameraPath, const std::optional<rad::Camera>& direct) {
   const std::string scenePath = cameraPath.substr(0, cameraPath.size() - 12) + ".obj";
-  std::optional<rad::CameraSpec> camera;
+  std::optional<rad::Camera> camera;
   try {
-    camera = rad::readCameraSidecar(scenePath);
+    camera = rad::findSceneCamera(scenePath);
   } catch (const rad::InputError&) {
-    return;
+    check(!direct, "findSceneCamera refused a camera loadCamera accepted");
+    return false;
   }
-  check(camera.has_value(), "the viewer did not find the sidecar");
-  check(camera->position.allFinite() && camera->lookAt.allFinite() && camera->up.allFinite() &&
-            camera->vfovDegrees > 0 && camera->vfovDegrees < 180,
-        "the viewer accepted a camera that is not finite or has no field of view");
+  check(camera.has_value(), "findSceneCamera did not find the sidecar");
+  check(direct.has_value(), "findSceneCamera accepted a camera loadCamera refused");
+  check(camera->position == direct->position && camera->lookAt == direct->lookAt &&
+            camera->up == direct->up && camera->vfovDegrees == direct->vfovDegrees &&
+            camera->width == direct->width && camera->height == direct->height,
+        "findSceneCamera and loadCamera read different cameras");
+  return true;
 }
-#endif
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path =
       rad::fuzz::writeTemp("scene.camera.json", reinterpret_cast<const char*>(data), size);
-#ifdef RADIOSITY_FUZZ_VIEWER
-  viewerSidecar(path);
-#endif
-  rad::Camera camera;
+  std::optional<rad::Camera> direct;
   try {
-    camera = rad::loadCamera(path);
+    direct = rad::loadCamera(path);
   } catch (const rad::InputError&) {
-    return 0;
   }
+  if (!sceneSidecar(path, direct)) return 0;
+  const rad::Camera& camera = *direct;
+  check(camera.position.allFinite() && camera.lookAt.allFinite() && camera.up.allFinite() &&
+            camera.vfovDegrees > 0 && camera.vfovDegrees < 180,
+        "an accepted camera is not finite or has no field of view");
   rad::CameraRays rays(camera);
   for (double p : {0.0, 0.5, 0.999}) {
     Eigen::Vector3d origin, direction;

@@ -1,7 +1,8 @@
-// libFuzzer target: OBJ + MTL through the project's own loading and validation (line checks,
-// tinyobjloader, material and index checks), then the solver's scene limits and the meshing a
-// solve would do. One input holds both files: the OBJ, then optionally a line "#%MTL%" and the
-// MTL, written as scene.mtl next to scene.obj (so `mtllib scene.mtl` finds it).
+// libFuzzer target: OBJ + MTL through the project's own loading and validation (loadScene's
+// format recognition, then line checks, tinyobjloader, material and index checks), then the
+// solver's scene limits and the meshing a solve would do. One input holds both files: the OBJ, then
+// optionally a line "#%MTL%" and the MTL, written as scene.mtl next to scene.obj (so `mtllib
+// scene.mtl` finds it).
 //
 // Findings: crashes, sanitizer reports, and any exception other than InputError (a
 // RuntimeFailure here means tinyobjloader and the line check disagreed on a file: a bug).
@@ -19,7 +20,7 @@
 #include "radiosity/pipeline/resource_limits.h"
 #include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/scene/lightmap_uv_check.h"
-#include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 #include "tests/fuzz/fuzz_temp_dir.h"
 
@@ -48,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 
   rad::Scene scene;
   try {
-    scene = rad::loadObjScene(objPath);
+    scene = rad::loadScene(objPath);
     rad::checkSceneLimits(scene);
   } catch (const rad::InputError& e) {
     check(std::strlen(e.what()) > 0, "an InputError without a message");

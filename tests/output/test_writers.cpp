@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -13,6 +15,7 @@
 #include "meshing/patch_mesh.h"
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/output/tone_map.h"
 #include "radiosity/output/vertex_colors_ply.h"
@@ -346,6 +349,83 @@ TEST(ElementsCsv, MaterialsPatchesAndNormalsOfAnL) {
 TEST(ElementsCsv, RejectsAWrongNumberOfValues) {
   std::ostringstream out;
   EXPECT_THROW(writeElementsCsv(out, unitSquare(), std::vector<Rgb>(3)), CheckFailure);
+}
+
+// The reader beside the writer: what was written reads back bit-exact, row by row.
+TEST(ElementsCsvReader, RoundTripIsBitExact) {
+  const PatchMesh mesh = foldedPair(3, 5);
+  const std::vector<Rgb> b = {Rgb(1.0 / 3.0, 2.0 / 7.0, 0.1 * kPi),
+                              Rgb(1e-300, 12345.678901234567, 0), Rgb(0, 0, 0), Rgb(7, 8, 9)};
+  const auto path = std::filesystem::temp_directory_path() / "radiosity_elements_roundtrip.csv";
+  {
+    std::ofstream out(path);
+    writeElementsCsv(out, mesh, b);
+  }
+  const std::vector<ElementsCsvRow> rows = readElementsCsv(path.string());
+  ASSERT_EQ(rows.size(), 4u);
+  for (int e = 0; e < 4; ++e) {
+    const ElementsCsvRow& row = rows[e];
+    EXPECT_EQ(row.line, e + 2);
+    EXPECT_EQ(row.element, e);
+    EXPECT_EQ(row.patch, mesh.patch(e));
+    EXPECT_EQ(row.material, mesh.material(e));
+    EXPECT_EQ(row.area, mesh.area(e));
+    EXPECT_EQ(row.centroid, mesh.centroid(e));
+    EXPECT_EQ(row.normal, mesh.normal(e));
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(row.radiosity[c], b[e][c]);
+      EXPECT_EQ(row.radiance[c], b[e][c] / M_PI);
+    }
+  }
+  std::filesystem::remove(path);
+}
+
+// Bad input: an InputError naming the file and the line.
+TEST(ElementsCsvReader, BadInputNamesFileAndLine) {
+  std::ostringstream good;
+  writeElementsCsv(good, unitSquare(), std::vector<Rgb>(2, Rgb::all(1)));
+  const std::string text = good.str();
+  const std::string header = text.substr(0, text.find('\n') + 1);
+  const std::string row0 =
+      text.substr(header.size(), text.find('\n', header.size()) + 1 - header.size());
+  auto expectError = [](const std::string& content, const std::string& where,
+                        const std::string& what) {
+    std::istringstream in(content);
+    try {
+      readElementsCsv(in, "sol.csv");
+      ADD_FAILURE() << "no error for: " << content;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  expectError("", "sol.csv:1:", "header missing");
+  expectError("element,patch\n" + row0, "sol.csv:1:", "header missing");
+  expectError(header + row0 + "0,0,0,1\n", "sol.csv:3:", "expected 16 comma-separated fields");
+  expectError(header + "\n" + row0 + row0.substr(0, row0.size() - 1) + ",\n",
+              "sol.csv:4:", "expected 16 comma-separated fields");
+  std::string nan = row0;
+  nan.replace(nan.rfind(','), std::string::npos, ",nan\n");
+  expectError(header + nan, "sol.csv:2:", "not a finite number: 'nan'");
+  expectError(header + "1e999" + row0.substr(row0.find(',')),
+              "sol.csv:2:", "not a finite number: '1e999'");
+  expectError(header + "x" + row0.substr(row0.find(',')), "sol.csv:2:", "not a finite number: 'x'");
+  expectError(header + "0.5" + row0.substr(row0.find(',')),
+              "sol.csv:2:", "element must be a non-negative integer");
+  // A missing file names it.
+  try {
+    readElementsCsv("/nonexistent/radiosity/elements.csv");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/radiosity/elements.csv: cannot open"),
+              std::string::npos)
+        << e.what();
+  }
+  // CRLF line ends and empty lines read the same.
+  std::string crlf;
+  for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  std::istringstream in(crlf + "\n");
+  EXPECT_EQ(readElementsCsv(in, "sol.csv").size(), 2u);
 }
 
 // ---------------------------------------------------------------------------------------------

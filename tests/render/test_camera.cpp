@@ -7,6 +7,7 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/render/camera.h"
+#include "radiosity/scene/camera.h"
 
 namespace rad {
 namespace {
@@ -74,6 +75,53 @@ TEST(Camera, BadFilesNameTheFileAndLine) {
   }
   EXPECT_THROW(loadCamera(path.string()), InputError);
   std::filesystem::remove(path);
+}
+
+// One reader for render, compare and view: an unknown key is an error naming the key, the file
+// and the key's line (the viewer used to ignore such keys).
+TEST(Camera, UnknownKeysAreErrorsNamingTheKeyFileAndLine) {
+  const auto path = std::filesystem::temp_directory_path() / "radiosity_unknown_key.camera.json";
+  std::ofstream(path) << "{\"position\": [0,0,0], \"look_at\": [0,0,1], \"up\": [0,1,0],\n"
+                         "\"vfov_degrees\": 40, \"width\": 8, \"height\": 8,\n"
+                         "\"fov\": 40}\n";
+  try {
+    loadCamera(path.string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(path.string() + ":3:"), std::string::npos) << what;
+    EXPECT_NE(what.find("unknown camera key \"fov\""), std::string::npos) << what;
+  }
+  // The motion-blur keys (read by loadMotionSpec) and a comment are allowed.
+  std::ofstream(path) << R"({"position": [0,0,0], "look_at": [0,0,1], "up": [0,1,0],
+    "vfov_degrees": 40, "width": 8, "height": 8, "comment": "c", "shutter": [0, 1], "motion": []})";
+  EXPECT_NO_THROW(loadCamera(path.string()));
+  std::filesystem::remove(path);
+}
+
+TEST(Camera, FindSceneCameraReadsTheSidecarWhenItExists) {
+  const auto dir = std::filesystem::temp_directory_path() / "radiosity_find_scene_camera";
+  std::filesystem::create_directories(dir);
+  const std::string scene = (dir / "room.obj").string();
+  std::filesystem::remove(dir / "room.camera.json");
+  EXPECT_FALSE(findSceneCamera(scene).has_value());
+  std::ofstream(dir / "room.camera.json") << R"({"position": [1,2,3], "look_at": [1,2,4],
+    "up": [0,1,0], "vfov_degrees": 50, "width": 64, "height": 32})";
+  const std::optional<Camera> camera = findSceneCamera(scene);
+  ASSERT_TRUE(camera.has_value());
+  EXPECT_EQ(camera->position, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(camera->vfovDegrees, 50);
+  EXPECT_EQ(camera->width, 64);
+  EXPECT_EQ(camera->height, 32);
+  // A sidecar that exists but is bad is an error naming it, not "no camera".
+  std::ofstream(dir / "room.camera.json") << "{\"position\": [0, 0, 1],\n \"look_at\": ";
+  try {
+    findSceneCamera(scene);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("room.camera.json"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -75,7 +75,8 @@ fs::path cornellWithCamera(const std::string& name) {
   fs::copy_file(cornellDir + "/cornell_box.mtl", dir / "cornell_box.mtl");
   std::ofstream(dir / "cornell_box.camera.json")
       << R"({"position": [0.278, 0.273, -0.8], "look_at": [0.278, 0.273, 0.0], "up": [0, 1, 0],
-            "vfov_degrees": 39.3, "note": "extra keys are ignored"})";
+            "vfov_degrees": 39.3, "width": 320, "height": 240,
+            "comment": "the one camera reader: unknown keys are errors, width and height required"})";
   return dir;
 }
 

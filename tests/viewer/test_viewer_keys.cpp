@@ -29,7 +29,7 @@ TEST_F(ViewerKeys, EveryHelpKeyIsHandledAndPickingFindsTheFacingWall) {
   options.width = options.height = 200;
   // Outside the cube at z = -2, looking +z: back faces are culled, so the wall seen is the far one
   // (z = 1), patch 1 of closedCube.
-  options.camera = CameraSpec{{0.5, 0.5, -2}, {0.5, 0.5, 0.5}, {0, 1, 0}, 30};
+  options.camera = Camera{{0.5, 0.5, -2}, {0.5, 0.5, 0.5}, {0, 1, 0}, 30};
   SolutionViewer viewer(makeSolutionPolyData(mesh, b, {}, ToneMap{0.1}), ToneMap{0.1}, nullptr,
                         options);
   for (const char* key : {"1", "2", "3", "4", "5", "6", "7",     "8", "9", "v", "e",

@@ -1,4 +1,4 @@
-#include "radiosity/render/json_file.h"
+#include "radiosity/scene/json_file.h"
 
 #include <algorithm>
 #include <fstream>

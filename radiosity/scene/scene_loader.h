@@ -1,0 +1,23 @@
+#pragma once
+
+#include <string>
+
+#include "radiosity/scene/scene.h"
+
+namespace rad {
+
+// Loads a scene file of any format radiosity reads (today OBJ + MTL, through loadObjScene). The
+// format is recognised by the file's extension AND its first bytes: binary glTF (magic "glTF"),
+// a JSON object (glTF 2.0 when the extension is .gltf), PLY ("ply"), else OBJ by the extension
+// .obj. Throws InputError naming the file:
+//   - "cannot open scene file" when it cannot be read;
+//   - "unsupported scene format (<what was recognised>): radiosity reads <formats>" for a format
+//     radiosity does not read, an unknown extension, or content that contradicts the extension
+//     (an .obj that holds binary glTF or PLY);
+//   - whatever the format's loader throws for bad content.
+Scene loadScene(const std::string& path);
+
+// The formats loadScene reads, for messages and --help: "OBJ (.obj)".
+std::string readableSceneFormats();
+
+}  // namespace rad
