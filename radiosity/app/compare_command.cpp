@@ -12,7 +12,6 @@
 #include <sstream>
 
 #include "radiosity/app/commands.h"
-#include "radiosity/app/render_methods.h"
 #include "radiosity/app/render_world.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
@@ -22,6 +21,7 @@
 #include "radiosity/output/image_io.h"
 #include "radiosity/render/camera.h"
 #include "radiosity/render/image_renderer.h"
+#include "radiosity/render/render_methods.h"
 
 namespace rad {
 namespace {

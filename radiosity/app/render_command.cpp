@@ -10,7 +10,6 @@
 #include <optional>
 
 #include "radiosity/app/commands.h"
-#include "radiosity/app/render_methods.h"
 #include "radiosity/app/render_world.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
@@ -23,6 +22,7 @@
 #include "radiosity/render/image_renderer.h"
 #include "radiosity/render/path_expression.h"
 #include "radiosity/render/path_renderer.h"
+#include "radiosity/render/render_methods.h"
 
 namespace rad {
 namespace {

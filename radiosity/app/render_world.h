@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "radiosity/app/render_methods.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solution_source.h"
 #include "radiosity/pipeline/solve_options.h"
+#include "radiosity/render/render_methods.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/render/scene_motion.h"
 

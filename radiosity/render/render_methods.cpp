@@ -1,4 +1,4 @@
-#include "radiosity/app/render_methods.h"
+#include "radiosity/render/render_methods.h"
 
 #include "radiosity/core/errors.h"
 #include "radiosity/render/direct_lighting.h"
