@@ -141,11 +141,14 @@ TEST(AnalyticPatchShots, ShadowEdgeBetweenTheReceiverPointsIsMarked) {
     const PatchMesh& mesh = pair == &withBlocker ? blocked : open;
     for (int e = 0; e < mesh.elementCount(); ++e)
       for (int f = 0; f < mesh.elementCount(); ++f)
-        if (mesh.patch(e) == 0 && mesh.patch(f) == 1)
+        if (mesh.patch(e) == 0 && mesh.patch(f) == 1) {
           EXPECT_GT(pair->elementToShooter(e, mesh.shooter(f)), 0);
+        }
   }
   for (int e = 0; e < blocked.elementCount(); ++e)
-    if (blocked.patch(e) == 0) EXPECT_TRUE(withBlocker.partlyShadowed()[e]) << "element " << e;
+    if (blocked.patch(e) == 0) {
+      EXPECT_TRUE(withBlocker.partlyShadowed()[e]) << "element " << e;
+    }
   for (int e = 0; e < open.elementCount(); ++e) EXPECT_FALSE(without.partlyShadowed()[e]);
 }
 

@@ -41,7 +41,9 @@ TEST(EmitterSampler, TwoDimensionalSamplesCoverTheEmittersUniformly) {
   EXPECT_NEAR(mean.x(), 0.5 * (0.213 + 0.343), 0.13 * 2.0 / kN);
   EXPECT_NEAR(mean.z(), 0.5 * (0.227 + 0.332), 0.105 * 2.0 / kN);
   for (int e = 0; e < mesh.elementCount(); ++e)
-    if (lights.pdfArea(e) > 0) EXPECT_NEAR(hits[e], mesh.area(e) / emitterArea, 2.0 / kN) << e;
+    if (lights.pdfArea(e) > 0) {
+      EXPECT_NEAR(hits[e], mesh.area(e) / emitterArea, 2.0 / kN) << e;
+    }
 }
 
 }  // namespace
