@@ -54,7 +54,10 @@ void expectSameOutputs(const std::filesystem::path& a, const std::filesystem::pa
 class Determinism : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(Determinism, SameSeedGivesIdenticalBytesOnAnyThreadCount) {
-  const std::string options = std::string(GetParam()) + " --elements 400 --rays 256";
+  // --rays only where hemisphere rows use it (it is an error with analytic factors).
+  const std::string method = GetParam();
+  const std::string options = method + " --elements 400" +
+                              (method.find("analytic") == std::string::npos ? " --rays 256" : "");
   const auto first = solve("det_a", options + " --seed 7 --threads 2");
   const auto again = solve("det_b", options + " --seed 7 --threads 2");
   const auto oneThread = solve("det_c", options + " --seed 7 --threads 1");
