@@ -184,8 +184,8 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
     // share of the direct light replaced by the point's own where a shadow edge (or an emitter's
     // plane) crosses the element. Where all of the element's points saw the emitters alike, the
     // mean is kept: a far landing samples the element about evenly, so the mean is what its own
-    // shadow ray would average to, without that ray's noise and cost (measured: docs/benchmarks.md, "Error
-    // against time").
+    // shadow ray would average to, without that ray's noise and cost (measured: docs/benchmarks.md,
+    // "Error against time").
     if (rho.maxComponent() > 0 && !uniformLight_[hit.element]) {
       const Point2 light{rng.uniform(), rng.uniform()};
       value += indirect_[hit.element] + rho * lightSample(hit, light, counts);

@@ -18,8 +18,8 @@ struct FinalGatherOptions {
   int gatherRays = 64;
   // Shadow rays per diffuse eye hit; 0: as many as gatherRays. Fewer than gatherRays pays where
   // the gather's indirect part, not the direct light, holds most of the variance (the Cornell
-  // box: docs/benchmarks.md, "Error against time"); the MIS weights count the rays of each kind (power
-  // heuristic with n·pdf), so any count stays unbiased.
+  // box: docs/benchmarks.md, "Error against time"); the MIS weights count the rays of each kind
+  // (power heuristic with n·pdf), so any count stays unbiased.
   int lightRays = 0;
   int maxSpecularDepth = 16;  // mirror/glass bounces an eye or gather ray may take
 };
