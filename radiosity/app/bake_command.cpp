@@ -62,7 +62,8 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   Scene scene = loadScene(o.solve.scenePath);
   if (o.sceneUvs) checkLightmapUvs(scene);
   const double loadSeconds = since(loadStart);
-  SolveResult result = solveOrReuse(std::move(scene), o.solve, {o.solutionDir, ""});
+  // A solution `solve` (or an earlier render) saved in --out is reused when it matches.
+  SolveResult result = solveOrReuse(std::move(scene), o.solve, {o.solutionDir, o.solve.outputDir});
   result.report.times.load = loadSeconds;
   result.report.times.total += loadSeconds;
   const Solution& solution = result.solution;

@@ -12,8 +12,9 @@
 #include "radiosity/output/display_radiance.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
-#include "radiosity/pipeline/solve_pipeline.h"
+#include "radiosity/pipeline/solution_source.h"
 #include "radiosity/scene/camera.h"
+#include "radiosity/scene/scene_loader.h"
 #include "radiosity/solvers/gathering_solvers.h"
 #include "radiosity/solvers/progressive_solver.h"
 #include "radiosity/solvers/solver_factory.h"
@@ -103,6 +104,7 @@ struct ViewArgs {
   bool noHelp = false;
   int raysOf = -1;
   int stopAfter = -1;
+  std::string solutionDir;  // --solution: show the solution `solve` saved there
 };
 
 void parseSize(const std::string& text, ViewerOptions& view) {
@@ -169,7 +171,8 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
 
   options.scenePath = args.input;
   finishSolveOptions(command, options, solverName);
-  const SolveResult result = runSolve(options);
+  const SolveResult result =
+      solveOrReuse(loadScene(options.scenePath), options, {args.solutionDir, ""});
   const Solution& solution = result.solution;
   cameraFor(options.scenePath);
   const ToneMap toneMap = solutionToneMap(solution.radiosity, solution.problem.area);
@@ -179,7 +182,12 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
   ViewerSolve live(solution, options);
   view.tolerance = live.tolerance();
   // Replay the solve to draw its convergence curve (rows are recomputed once, then cached):
-  // the result is the same solution, deterministic for the seed.
+  // the result is the same solution, deterministic for the seed. Not for a reused solution:
+  // that would cast the very rays reusing it saves (the keys still step the solver).
+  if (result.report.reusedSavedSolution && view.chart) {
+    view.chart = false;
+    logInfo("no convergence chart: the reused solution has no iterations to replay");
+  }
   if (view.chart) {
     while (!live.converged()) live.step();
     logInfo("replayed " + std::to_string(live.iterations()) +
@@ -221,6 +229,9 @@ void registerViewCommand(CLI::App& app, CommandAction& run) {
           "--stop-after", args->stopAfter,
           "Show the solver restarted from B = E after this many iterations (shots, sweeps)")
       ->check(CLI::NonNegativeNumber);
+  view->add_option("--solution", args->solutionDir,
+                   "Show the solution `radiosity solve` saved in this directory for the scene "
+                   "(same solve options) instead of solving");
   addSolveOptions(*view, *options, *solverName);
   addCommonFlags(*view);
   view->callback([&run, view, options, solverName, args] {

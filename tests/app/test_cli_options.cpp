@@ -66,6 +66,12 @@ TEST(CliOptions, RenderAndBakeReuseTheSolutionSolveWrote) {
   ASSERT_EQ(bake.exitCode, 0) << bake.stderrText;
   EXPECT_TRUE(readJson(baked / "bake.json")["reused_saved_solution"].get<bool>());
 
+  // Without --solution, bake reuses a matching solution in its own --out, as render does.
+  const auto inPlace =
+      runRadiosity("bake " + kCornell + " --out " + solved.string() + options + " --no-lightmap");
+  ASSERT_EQ(inPlace.exitCode, 0) << inPlace.stderrText;
+  EXPECT_TRUE(readJson(solved / "bake.json")["reused_saved_solution"].get<bool>());
+
   // Other solve options than the saved solution's: an error naming the directory, nothing written.
   const fs::path other = scratchPath("reuse_other");
   const auto mismatch = runRadiosity("bake " + kCornell + " --out " + other.string() +
