@@ -64,15 +64,21 @@ void keepSolution(const Solver& solver, bool pointValues, Solution& solution, So
   report.finalProgress = solver.progress();
 }
 
-void warnIfNotConverged(const IterationLimits& limits, const SolveReport& report) {
+void warnIfNotConverged(const IterationLimits& limits, const Solution& solution,
+                        const SolveReport& report) {
   const std::string reached = report.progressMeasure + " " + formatNumber(report.finalProgress);
+  bool reflectsAll = false;
+  for (const Rgb& rho : solution.problem.reflectance) reflectsAll |= rho.maxComponent() >= 1;
+  const std::string why = reflectsAll ? " (some surfaces have reflectance 1: they keep all the "
+                                        "light they receive, so a closed scene never loses it)"
+                                      : "";
   if (report.stoppedBy == StopReason::TimeLimit)
     logWarning("time limit of " + formatNumber(limits.timeLimit) + " s reached after " +
                std::to_string(report.iterations) + " iterations: writing the solution so far (" +
-               reached + ", not converged)");
+               reached + ", not converged)" + why);
   else if (report.stoppedBy == StopReason::IterationLimit && limits.bounces < 0)
     logWarning("stopped after " + std::to_string(report.iterations) + " iterations with " +
-               reached + " above the tolerance " + formatNumber(limits.tolerance));
+               reached + " above the tolerance " + formatNumber(limits.tolerance) + why);
 }
 
 }  // namespace
@@ -136,7 +142,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
 
   keepSolution(*solver, formFactors.analytic() && options.receiverPoints == 3, solution, report);
-  warnIfNotConverged(limits, report);
+  warnIfNotConverged(limits, solution, report);
   report.times.total = since(start);
   return result;
 }

@@ -16,7 +16,7 @@ enum class SurfaceKind {
 
 struct Material {
   std::string name;
-  Rgb diffuse;             // Kd: Lambertian reflectance rho, each channel in [0, 1)
+  Rgb diffuse;             // Kd: Lambertian reflectance rho, each channel in [0, 1]
   Rgb emission;            // Ke: emitted radiance L_e in W m^-2 sr^-1 (front face only)
   Rgb specular;            // Ks: mirror reflectance
   Rgb transmittance;       // Tf: dielectric transmittance filter

@@ -1,9 +1,11 @@
 #include "radiosity/scene/mtl_line_check.h"
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 
 #include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
 #include "radiosity/scene/obj_tokens.h"
 
 namespace rad {
@@ -48,12 +50,18 @@ MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
         const std::vector<double> rgb = parseNumbers(tokens, 3, 3, file, line);
         if (keyword == "Kd") {
           for (double c : rgb) {
-            if (c < 0 || c >= 1) {
+            if (c < 0 || c > 1) {
               throw InputError(
                   file, line,
-                  "Kd " + channels(rgb) + ": reflectance must be in [0, 1) in every channel");
+                  "Kd " + channels(rgb) + ": reflectance must be in [0, 1] in every channel");
             }
           }
+          // Exporters write Kd 1 for white (often times a texture): accepted, but such a surface
+          // keeps every bit of light it receives, so say so once, at its line.
+          if (*std::max_element(rgb.begin(), rgb.end()) == 1)
+            logWarning(file + ":" + std::to_string(line) + ": Kd " + channels(rgb) +
+                       ": reflectance 1 keeps all the light a surface receives; a closed scene "
+                       "of such surfaces cannot converge (it stops at the iteration budget)");
         } else if (keyword == "Ke") {
           for (double c : rgb) {
             if (c < 0) {

@@ -58,11 +58,11 @@ Material convertMaterial(const tinyobj::material_t& m, const MaterialSource& sou
   const bool finite = material.diffuse.isFinite() && material.emission.isFinite() &&
                       material.specular.isFinite() && material.transmittance.isFinite() &&
                       std::isfinite(material.ior) && std::isfinite(material.shininess);
-  if (!finite || material.diffuse.minComponent() < 0 || material.diffuse.maxComponent() >= 1 ||
+  if (!finite || material.diffuse.minComponent() < 0 || material.diffuse.maxComponent() > 1 ||
       material.emission.minComponent() < 0) {
     throw InputError(source.file, source.line,
                      "material '" + source.name +
-                         "': values out of range after parsing (reflectance must be in [0, 1), "
+                         "': values out of range after parsing (reflectance must be in [0, 1], "
                          "emission non-negative)");
   }
   return material;

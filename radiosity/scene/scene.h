@@ -20,7 +20,7 @@ struct ScenePolygon {
 };
 
 // A validated scene: every polygon has >= 3 distinct, in-range vertices and non-zero area,
-// every material has finite values with diffuse in [0, 1) and emission >= 0.
+// every material has finite values with diffuse in [0, 1] and emission >= 0.
 struct Scene {
   std::string sourcePath;
   std::vector<Eigen::Vector3d> positions;

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "radiosity/core/compensated_sum.h"
@@ -86,7 +87,9 @@ std::vector<Rgb> ProgressiveSolver::withAmbient() const {
   Rgb ambient;
   for (int c = 0; c < 3; ++c) {
     const double meanRho = rhoSum[c] / totalArea;
-    ambient[c] = unshotSum[c] / totalArea / (1.0 - meanRho);
+    // Where every surface reflects all light (ρ = 1 is allowed) the series 1/(1 − ρ) has no sum:
+    // the display estimate is capped instead of dividing by zero.
+    ambient[c] = unshotSum[c] / totalArea / std::max(1.0 - meanRho, 1e-3);
   }
   for (int i = 0; i < problem_.size(); ++i) out[i] += problem_.reflectance[i] * ambient;
   return out;

@@ -9,7 +9,7 @@ namespace rad {
 // The per-element data of B_i = E_i + rho_i sum_j F_ij B_j, per RGB channel.
 struct RadiosityProblem {
   std::vector<Rgb> emission;     // E_i: emitted radiosity, W/m² (pi × emitted radiance)
-  std::vector<Rgb> reflectance;  // rho_i, each channel in [0, 1)
+  std::vector<Rgb> reflectance;  // rho_i, each channel in [0, 1]
   std::vector<double> area;      // A_i, scene units²
 
   int size() const { return static_cast<int>(area.size()); }

@@ -67,7 +67,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (const Eigen::Vector2d& uv : polygon.uvs) check(uv.allFinite(), "a non-finite UV");
   }
   for (const rad::Material& m : scene.materials)
-    check(m.diffuse.isFinite() && m.emission.isFinite() && m.diffuse.maxComponent() < 1 &&
+    check(m.diffuse.isFinite() && m.emission.isFinite() && m.diffuse.maxComponent() <= 1 &&
               m.diffuse.minComponent() >= 0 && m.emission.minComponent() >= 0,
           "a material outside its documented range");
   if (scene.polygons.empty()) return 0;

@@ -265,6 +265,17 @@ TEST_F(ObjEdgeCases, MalformedTextureCoordinatesCarryTheirLine) {
   expectError("range.obj", "range.obj", 8, "texture coordinate index 2 is out of range (1 defined");
 }
 
+// Kd 1 (what exporters write for white) is accepted as reflectance 1; only above 1 is an error.
+TEST_F(ObjEdgeCases, ReflectanceOneIsAcceptedAboveOneIsNot) {
+  write("s.obj", std::string("mtllib m.mtl\nusemtl a\n") + kSquareVertices + "f 1 2 3\n");
+  write("m.mtl", "newmtl a\nKd 1 1 1\nKe 1 1 1\n");
+  const Scene scene = loadObjScene((dir_ / "s.obj").string());
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_EQ(scene.materials[0].diffuse.minComponent(), 1.0);
+  write("m.mtl", "newmtl a\nKd 1 1.0000001 1\n");
+  expectError("s.obj", "m.mtl", 2, "reflectance must be in [0, 1]");
+}
+
 TEST_F(ObjEdgeCases, MtlErrorsCarryTheirLine) {
   const std::string obj = std::string("mtllib m.mtl\n") + kSquareVertices + "f 1 2 3\n";
   write("s.obj", obj);
@@ -274,7 +285,7 @@ TEST_F(ObjEdgeCases, MtlErrorsCarryTheirLine) {
   };
   check("newmtl a\nKd 0.5 0.5\n", 2, "'Kd' needs exactly 3 numbers, found 2");
   check("newmtl a\nKd 0.5 0.5 0.5 0.5\n", 2, "'Kd' needs exactly 3 numbers, found 4");
-  check("newmtl a\nKd 0.5 -0.1 0.5\n", 2, "reflectance must be in [0, 1)");
+  check("newmtl a\nKd 0.5 -0.1 0.5\n", 2, "reflectance must be in [0, 1]");
   check("newmtl a\nKd 0.5 0.5 0.5\nKe 1 nan 1\n", 3, "non-finite number 'nan' in 'Ke'");
   check("newmtl a\nKs 1 1 x\n", 2, "malformed number 'x' in 'Ks'");
   check("newmtl a\nTf xyz 1 1 1\n", 2, "'Tf' needs exactly 3 numbers, found 4");

@@ -205,9 +205,9 @@ TEST(ObjLoaderBadInput, MissingMtllib) {
                    "cannot open material library 'does_not_exist.mtl'");
 }
 
-TEST(ObjLoaderBadInput, ReflectanceOne) {
-  expectInputError(kBad + "reflectance_one.obj", "reflectance_one.mtl", 8,
-                   "reflectance must be in [0, 1)");
+TEST(ObjLoaderBadInput, ReflectanceAboveOne) {
+  expectInputError(kBad + "reflectance_above_one.obj", "reflectance_above_one.mtl", 8,
+                   "reflectance must be in [0, 1]");
 }
 
 TEST(ObjLoaderBadInput, NegativeEmission) {

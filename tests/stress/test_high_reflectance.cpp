@@ -48,6 +48,18 @@ bool run(Solver& solver, double tolerance, int budget) {
   return solver.progress() <= tolerance;
 }
 
+// rho = 1 exactly (accepted, with a warning): a closed box absorbs nothing, so every shot hands
+// all its power on. The unshot power can never fall (the rows of a closed box sum to 1), so the
+// solve cannot converge and must stop at its budget, with B finite and the ambient term finite.
+TEST(WhiteFurnace, ShootingKeepsAllThePowerUnshotAndStaysFinite) {
+  NearlyWhiteFurnace f(1.0);
+  ProgressiveSolver solver(f.problem, f.cache);
+  EXPECT_FALSE(run(solver, 1e-4, 3000));
+  EXPECT_NEAR(solver.progress(), 1.0, 1e-9);  // no power lost, none created
+  for (const std::vector<Rgb>& b : {solver.solution(), solver.withAmbient()})
+    for (const Rgb& v : b) ASSERT_TRUE(v.isFinite());
+}
+
 class HighReflectance : public ::testing::TestWithParam<double> {};
 
 TEST_P(HighReflectance, GaussSeidelReachesEOverOneMinusRho) {
