@@ -157,6 +157,13 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
   };
 
   if (std::filesystem::is_directory(args.input)) {
+    // A saved solution.vtp is shown as it was solved: solve options would change nothing.
+    finishSolveOptions(command, options, solverName,
+                       "a saved solution.vtp (view DIR) is shown as it was solved");
+    if (!args.solutionDir.empty())
+      throw InputError("--solution is not used: " + args.input +
+                       " is already a solution directory (view SCENE --solution DIR shows a "
+                       "saved solve over its scene)");
     const std::string path = (std::filesystem::path(args.input) / "solution.vtp").string();
     vtkSmartPointer<vtkPolyData> data = readSolutionVtp(path);
     cameraFor(solutionSceneFile(data));
