@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "meshing/lightmap_charts.h"
@@ -41,9 +42,10 @@ struct BakeOptions {
   int dilation = -1;  // -1: the padding
   double chartAngle = 30;
   bool noLightmap = false;
-  bool sceneUvs = false;    // bake into the scene's own texture coordinates
-  int gather = 0;           // per-texel final gather rays; 0: interpolate the solution
-  std::string solutionDir;  // --solution: reuse the solution `solve` saved there
+  bool sceneUvs = false;           // bake into the scene's own texture coordinates
+  int gather = 0;                  // per-texel final gather rays; 0: interpolate the solution
+  std::string solutionDir;         // --solution: reuse the solution `solve` saved there
+  std::optional<double> exposure;  // --exposure: fixed instead of automatic
 };
 
 double since(std::chrono::steady_clock::time_point t) {
@@ -52,6 +54,7 @@ double since(std::chrono::steady_clock::time_point t) {
 
 void runBake(const CLI::App& command, BakeOptions& o) {
   finishSolveOptions(command, o.solve, o.solverName);
+  if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
   if (o.dilation < 0) o.dilation = o.padding;
   if (o.dilation > o.padding)
     throw InputError("--dilation " + std::to_string(o.dilation) + " exceeds --padding " +
@@ -73,7 +76,9 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   const VertexInterpolation interpolation(mesh);
   const std::vector<Rgb> vertexRadiance =
       interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
-  const ToneMap toneMap = solutionToneMap(solution.radiosity, solution.problem.area);
+  const ToneMap toneMap = o.exposure ? ToneMap{*o.exposure}
+                                     : solutionToneMap(solution.radiosity, solution.problem.area,
+                                                       solution.problem.emission);
   std::vector<std::string> materialNames;
   for (const Material& m : solution.scene.materials) materialNames.push_back(m.name);
 
@@ -228,6 +233,10 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
                  "without overlaps) instead of generating lightmap UVs; charts are its UV islands")
       ->excludes(angle)
       ->excludes(noLightmap);
+  bake->add_option("--exposure", o->exposure,
+                   "Exposure of the 8-bit outputs (lightmap.png, vertex colours, the glTF): "
+                   "display = clamp(exposure × radiance); default: the 99th percentile of the lit "
+                   "surfaces' radiance maps to 1 (emitters excluded)");
   bake->add_option("--solution", o->solutionDir,
                    "Reuse the solution `radiosity solve` wrote into this directory (same scene and "
                    "solve options) instead of solving");

@@ -108,7 +108,8 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   const VertexInterpolation interpolation(mesh);
   const std::vector<Rgb> vertexRadiance =
       interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
-  const ToneMap toneMap = solutionToneMap(solution.radiosity, solution.problem.area);
+  const ToneMap toneMap =
+      solutionToneMap(solution.radiosity, solution.problem.area, solution.problem.emission);
   AtomicFile ply((dir / "vertex_colors.ply").string(), /*binary=*/true);
   writeVertexColorsPly(ply.stream(), interpolation, mesh, vertexRadiance, toneMap);
   std::vector<AtomicFile*> files = {&csv, &ply};

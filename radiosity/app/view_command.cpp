@@ -182,7 +182,8 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
       solveOrReuse(loadScene(options.scenePath), options, {args.solutionDir, ""});
   const Solution& solution = result.solution;
   cameraFor(options.scenePath);
-  const ToneMap toneMap = solutionToneMap(solution.radiosity, solution.problem.area);
+  const ToneMap toneMap =
+      solutionToneMap(solution.radiosity, solution.problem.area, solution.problem.emission);
   vtkSmartPointer<vtkPolyData> data =
       makeSolutionPolyData(*solution.mesh, solution.radiosity, solution.unshot, toneMap);
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "radiosity/core/check.h"
+
 namespace rad {
 
 std::vector<Rgb> radianceFromRadiosity(const std::vector<Rgb>& radiosity) {
@@ -10,8 +12,16 @@ std::vector<Rgb> radianceFromRadiosity(const std::vector<Rgb>& radiosity) {
   return radiance;
 }
 
-ToneMap solutionToneMap(const std::vector<Rgb>& radiosity, const std::vector<double>& area) {
-  return ToneMap::autoExposure(radianceFromRadiosity(radiosity), area);
+ToneMap solutionToneMap(const std::vector<Rgb>& radiosity, const std::vector<double>& area,
+                        const std::vector<Rgb>& emission) {
+  RAD_CHECK_EQ(emission.size(), area.size());
+  std::vector<double> lit = area;
+  bool anyLit = false;
+  for (size_t e = 0; e < lit.size(); ++e) {
+    if (emission[e].maxComponent() > 0) lit[e] = 0;
+    anyLit = anyLit || lit[e] > 0;
+  }
+  return ToneMap::autoExposure(radianceFromRadiosity(radiosity), anyLit ? lit : area);
 }
 
 }  // namespace rad

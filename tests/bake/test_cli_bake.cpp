@@ -161,6 +161,21 @@ void validate(const fs::path& glb) {
   EXPECT_EQ(status, 0) << report;
 }
 
+TEST(CliBake, ExposureFixesTheToneMapAndMustBePositive) {
+  const fs::path dir = testing::scratchPath("bake_exposure");
+  const std::string scene = kData + "/cornell_box/cornell_box.obj";
+  const auto ok = runRadiosity("bake " + scene + " --out " + dir.string() +
+                               " --elements 100 --rays 32 --no-lightmap --exposure 0.25 -q");
+  ASSERT_EQ(ok.exitCode, 0) << ok.stderrText;
+  std::ifstream in(dir / "bake.json");
+  EXPECT_EQ(nlohmann::json::parse(in)["tone_map_exposure"].get<double>(), 0.25);
+  fs::remove_all(dir);
+  const auto bad = runRadiosity("bake " + scene + " --out " + dir.string() + " --exposure -1");
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.stderrText.find("--exposure must be > 0"), std::string::npos) << bad.stderrText;
+  EXPECT_FALSE(fs::exists(dir));
+}
+
 TEST(CliBake, GlbPassesTheKhronosValidator) { validate(cornellBake() / "scene_baked.glb"); }
 
 TEST(CliBake, VertexColoursOnlySkipsTheLightmapAndStaysValid) {

@@ -16,6 +16,7 @@
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/output/display_radiance.h"
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/output/tone_map.h"
 #include "radiosity/output/vertex_colors_ply.h"
@@ -222,6 +223,17 @@ TEST(ToneMap, AutoExposureMapsAUniformFieldToOne) {
   const ToneMap tm = ToneMap::autoExposure(std::vector<Rgb>(50, c), std::vector<double>(50, 0.7));
   EXPECT_NEAR(tm.exposure, 1.0 / 0.55788, 1e-12);
   EXPECT_NEAR(tm.exposure * luminance, 1.0, 1e-12);
+}
+
+// The display exposure is set by the lit surfaces: an emitter covering half the area at 100× the
+// radiance of the rest would otherwise take the 99th percentile and leave the scene at 1/100.
+TEST(ToneMap, SolutionExposureIgnoresEmitters) {
+  const std::vector<Rgb> radiosity = {Rgb::all(100 * M_PI), Rgb::all(M_PI)};  // L = 100, 1
+  const std::vector<double> area = {0.5, 0.5};
+  EXPECT_NEAR(solutionToneMap(radiosity, area, {Rgb::all(1), Rgb()}).exposure, 1.0, 1e-12);
+  EXPECT_NEAR(solutionToneMap(radiosity, area, {Rgb(), Rgb()}).exposure, 0.01, 1e-12);
+  // Every element emits: nothing lit is left, so all of them count.
+  EXPECT_NEAR(solutionToneMap(radiosity, area, {Rgb::all(1), Rgb::all(1)}).exposure, 0.01, 1e-12);
 }
 
 TEST(ToneMap, AutoExposurePercentileIsWeighted) {
