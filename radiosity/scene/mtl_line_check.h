@@ -20,8 +20,8 @@ struct MtlLineCheck {
 
 // Validates an MTL library: every statement about a material follows a `newmtl`; material names
 // are single words; Kd, Ke, Ks, Tf/Kt take exactly 3 finite numbers, Ni and Ns one, illum one
-// integer; Kd lies in [0, 1] (1 with a warning) and Ke is non-negative in every channel. Throws InputError with
-// "file:line: message" at the first offending line.
+// integer; Kd lies in [0, 1] (1 with a warning) and Ke is non-negative in every channel. Throws
+// InputError with "file:line: message" at the first offending line.
 MtlLineCheck checkMtlText(const std::string& text, const std::string& file);
 
 }  // namespace rad
