@@ -23,6 +23,8 @@
 #include "radiosity/output/lightmap_baked_mesh.h"
 #include "radiosity/output/obj_export.h"
 #include "radiosity/output/vertex_colors_ply.h"
+#include "radiosity/pipeline/mesh_stage.h"
+#include "radiosity/pipeline/resource_limits.h"
 #include "radiosity/pipeline/solution_source.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/render_scene.h"
@@ -52,6 +54,24 @@ double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+// The lightmap atlas of `mesh` as the options ask: the scene's own UVs, or generated charts
+// packed at a texel size or into a square atlas. InputError naming the scene when they do not fit.
+LightmapLayout layoutLightmap(const PatchMesh& mesh, const BakeOptions& o) {
+  try {
+    if (o.sceneUvs) {
+      const int side =
+          o.texelSize > 0 ? atlasSideForTexelSize(mesh, o.texelSize, 16384) : o.lightmapSize;
+      return layoutFromMeshUvs(mesh, side, side, o.padding);
+    }
+    return packLightmapCharts(buildLightmapCharts(mesh, {o.chartAngle}),
+                              {o.texelSize, o.lightmapSize, o.padding});
+  } catch (const InputError& e) {
+    // The options do not fit this scene's charts: name the scene.
+    if (!e.file().empty()) throw;
+    throw InputError(o.solve.scenePath, 0, e.what());
+  }
+}
+
 void runBake(const CLI::App& command, BakeOptions& o) {
   finishSolveOptions(command, o.solve, o.solverName);
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
@@ -65,6 +85,20 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   Scene scene = loadScene(o.solve.scenePath);
   if (o.sceneUvs) checkLightmapUvs(scene);
   const double loadSeconds = since(loadStart);
+  // Whether the charts fit is decided before the solve, on the mesh the solve starts from: a
+  // lightmap size that cannot hold them fails in seconds, not after the solve. Uniform meshing is
+  // deterministic, so without refinement that layout is the solved mesh's own.
+  LightmapLayout layout;
+  bool earlyLayout = false;
+  double chartSeconds = 0;
+  if (!o.noLightmap) {
+    const auto t = std::chrono::steady_clock::now();
+    checkSceneLimits(scene);  // as the solve does before it meshes
+    const LightmapLayout planned = layoutLightmap(*meshScene(scene, o.solve).mesh, o);
+    earlyLayout = !(o.solve.refineThreshold > 0);
+    if (earlyLayout) layout = planned;
+    chartSeconds = since(t);
+  }
   // A solution `solve` (or an earlier render) saved in --out is reused when it matches.
   SolveResult result = solveOrReuse(std::move(scene), o.solve, {o.solutionDir, o.solve.outputDir});
   result.report.times.load = loadSeconds;
@@ -88,26 +122,12 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                             {"tone_map_exposure", toneMap.exposure},
                             {"solve_seconds", result.report.times.total},
                             {"reused_saved_solution", result.report.reusedSavedSolution}};
-  LightmapLayout layout;
   Lightmap lightmap;
   std::vector<std::uint8_t> png;
   if (!o.noLightmap) {
     auto t = std::chrono::steady_clock::now();
-    try {
-      if (o.sceneUvs) {
-        const int side =
-            o.texelSize > 0 ? atlasSideForTexelSize(mesh, o.texelSize, 16384) : o.lightmapSize;
-        layout = layoutFromMeshUvs(mesh, side, side, o.padding);
-      } else {
-        layout = packLightmapCharts(buildLightmapCharts(mesh, {o.chartAngle}),
-                                    {o.texelSize, o.lightmapSize, o.padding});
-      }
-    } catch (const InputError& e) {
-      // The options do not fit this scene's charts: name the scene.
-      if (!e.file().empty()) throw;
-      throw InputError(o.solve.scenePath, 0, e.what());
-    }
-    const double chartSeconds = since(t);
+    if (!earlyLayout) layout = layoutLightmap(mesh, o);
+    chartSeconds += since(t);
     t = std::chrono::steady_clock::now();
     if (o.gather > 0) {
       // Per-texel final gather: direct light by shadow rays to the emitters and gathered light

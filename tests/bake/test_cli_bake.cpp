@@ -176,6 +176,17 @@ TEST(CliBake, ExposureFixesTheToneMapAndMustBePositive) {
   EXPECT_FALSE(fs::exists(dir));
 }
 
+// Charts that cannot fit the atlas fail before the solve: no solve line ("mesh: ...") in the log.
+TEST(CliBake, ChartsThatDoNotFitFailBeforeTheSolve) {
+  const fs::path dir = testing::scratchPath("bake_no_fit");
+  const auto r = runRadiosity("bake " + kData + "/cornell_box/cornell_box.obj --out " +
+                              dir.string() + " --lightmap-size 8");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("cornell_box.obj: "), std::string::npos) << r.stderrText;
+  EXPECT_EQ(r.stderrText.find("mesh: "), std::string::npos) << r.stderrText;
+  EXPECT_FALSE(fs::exists(dir));
+}
+
 TEST(CliBake, GlbPassesTheKhronosValidator) { validate(cornellBake() / "scene_baked.glb"); }
 
 TEST(CliBake, VertexColoursOnlySkipsTheLightmapAndStaysValid) {
