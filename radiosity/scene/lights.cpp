@@ -13,6 +13,13 @@ namespace {
 
 constexpr double kDegrees = M_PI / 180;
 
+// A key as a JSON pointer token (RFC 6901): "~" → "~0", "/" → "~1".
+std::string pointerToken(const std::string& key) {
+  std::string out;
+  for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+  return out;
+}
+
 // Reads one light's values, each error naming the file, the line and the JSON pointer.
 class LightReader {
  public:
@@ -21,7 +28,7 @@ class LightReader {
       : path_(path), text_(text), j_(j), pointer_(std::move(pointer)) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    const std::string at = key.empty() ? pointer_ : pointer_ + "/" + key;
+    const std::string at = key.empty() ? pointer_ : pointer_ + "/" + pointerToken(key);
     throw InputError(path_, lineOfPointer(text_, at), at + ": " + what);
   }
 
@@ -153,8 +160,8 @@ std::vector<Light> loadLights(const std::string& path) {
     throw InputError(path, 1, "a lights file holds one JSON object with a \"lights\" array");
   for (const auto& item : j.items())
     if (item.key() != "lights" && item.key() != "comment")
-      throw InputError(path, lineOfPointer(file.text, "/" + item.key()),
-                       "/" + item.key() + ": unknown key (known: lights, comment)");
+      throw InputError(path, lineOfPointer(file.text, "/" + pointerToken(item.key())),
+                       "/" + pointerToken(item.key()) + ": unknown key (known: lights, comment)");
   const nlohmann::json& list = j["lights"];
   if (!list.is_array())
     throw InputError(path, lineOfPointer(file.text, "/lights"), "/lights: must be an array");
