@@ -117,14 +117,16 @@ void DirectLightStage::compute(int e) {
   const auto points = receiverPoints(mesh_.corners(e), receiverPoints_);
   const int count = receiverPoints_ == 1 ? 1 : 3;
   uint64_t cast = 0;
-  Rgb sum;
+  std::array<Rgb, 3> atPoints{};
   for (size_t l = 0; l < scene_.lights.size(); ++l)
     for (int k = 0; k < count; ++k)
-      sum += directIrradiance(scene_.lights[l], rays_, points[k], n,
-                              streamKey(seed_ ^ 0x6c69676874ull, static_cast<uint64_t>(e),
-                                        l * 3 + static_cast<uint64_t>(k)),
-                              cast);
-  irradiance_[e] = sum / count;
+      atPoints[k] += directIrradiance(scene_.lights[l], rays_, points[k], n,
+                                      streamKey(seed_ ^ 0x6c69676874ull, static_cast<uint64_t>(e),
+                                                l * 3 + static_cast<uint64_t>(k)),
+                                      cast);
+  if (count == 1) atPoints[1] = atPoints[2] = atPoints[0];
+  pointIrradiance_[e] = atPoints;
+  irradiance_[e] = (atPoints[0] + atPoints[1] + atPoints[2]) / 3;
   elementRays_[e] = cast;
 }
 
@@ -138,6 +140,7 @@ void DirectLightStage::apply(RadiosityProblem& problem) {
   const auto start = std::chrono::steady_clock::now();
   const int n = mesh_.elementCount();
   irradiance_.assign(n, Rgb());
+  pointIrradiance_.assign(n, {});
   elementRays_.assign(n, 0);
   tbb::parallel_for(0, n, [&](int e) { compute(e); });
   raysCast_ = std::accumulate(elementRays_.begin(), elementRays_.end(), uint64_t{0});
@@ -157,6 +160,7 @@ void DirectLightStage::meshChanged(const std::vector<int>& changed, RadiosityPro
   if (scene_.lights.empty()) return;
   const int n = mesh_.elementCount();
   irradiance_.resize(n);
+  pointIrradiance_.resize(n);
   elementRays_.resize(n, 0);
   tbb::parallel_for(size_t{0}, changed.size(), [&](size_t i) {
     const uint64_t before = elementRays_[changed[i]];
@@ -165,6 +169,14 @@ void DirectLightStage::meshChanged(const std::vector<int>& changed, RadiosityPro
   });
   raysCast_ = std::accumulate(elementRays_.begin(), elementRays_.end(), uint64_t{0});
   addEmission(problem);
+}
+
+void DirectLightStage::addPointVariation(const RadiosityProblem& problem,
+                                         std::vector<std::array<Rgb, 3>>& pointRadiosity) const {
+  if (scene_.lights.empty() || pointRadiosity.size() != irradiance_.size()) return;
+  for (size_t e = 0; e < pointRadiosity.size(); ++e)
+    for (int k = 0; k < 3; ++k)
+      pointRadiosity[e][k] += problem.reflectance[e] * (pointIrradiance_[e][k] - irradiance_[e]);
 }
 
 void DirectLightStage::report(SolveReport& report) const { report.directLightRays = raysCast_; }

@@ -46,6 +46,12 @@ class DirectLightStage {
   // changed elements afresh, then ρ E_d added to every element's emission again.
   void meshChanged(const std::vector<int>& changed, RadiosityProblem& problem);
 
+  // The solver saw each element's mean E_d; where the solution keeps B at the receiver points
+  // (pointRadiosity), adds ρ (E_d at the point − the mean), so the displayed solution shows how
+  // the direct light varies inside an element (exact, as B is linear in E).
+  void addPointVariation(const RadiosityProblem& problem,
+                         std::vector<std::array<Rgb, 3>>& pointRadiosity) const;
+
   const std::vector<Rgb>& irradiance() const { return irradiance_; }  // E_d per element
   uint64_t raysCast() const { return raysCast_; }
   // The rays cast, for summary.json.
@@ -60,6 +66,7 @@ class DirectLightStage {
   uint64_t seed_;
   int receiverPoints_;
   std::vector<Rgb> irradiance_;
+  std::vector<std::array<Rgb, 3>> pointIrradiance_;  // E_d at each receiver point
   std::vector<uint64_t> elementRays_;
   uint64_t raysCast_ = 0;
 };

@@ -147,6 +147,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
 
   keepSolution(*solver, formFactors.analytic() && options.receiverPoints == 3, solution, report);
+  directLight.addPointVariation(solution.problem, solution.pointRadiosity);
   warnIfNotConverged(limits, solution, report);
   report.times.total = since(start);
   return result;

@@ -90,6 +90,26 @@ TEST(DirectLight, PointLightOverAPlaneGivesRhoICosOverRSquaredAtTheReceiverPoint
   EXPECT_EQ(result.report.directLightRays, 3u * s.mesh->elementCount());
 }
 
+// Where the solution keeps B at the receiver points (analytic factors, 3 points), each point has
+// its own direct light, not the element's mean.
+TEST(DirectLight, ReceiverPointValuesShowTheDirectLightAtEachPoint) {
+  const Light light = pointLight({0.3, 0.4, -0.2}, {10, 20, 30});
+  SolveOptions options = quickOptions();
+  options.formFactors = FormFactorMethod::Analytic;
+  options.shadowRays = 1;
+  const SolveResult result = solveScene(floorScene({light}), options);
+  const Solution& s = result.solution;
+  ASSERT_EQ(s.pointRadiosity.size(), static_cast<size_t>(s.mesh->elementCount()));
+  for (int e = 0; e < s.mesh->elementCount(); ++e) {
+    const auto points = receiverPoints(s.mesh->corners(e));
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d d = light.position - points[k];
+      const Rgb want = kRho * light.intensity * (d.normalized().y() / d.squaredNorm());
+      expectNear(s.pointRadiosity[e][k], want, 1e-12, e);
+    }
+  }
+}
+
 TEST(DirectLight, ALightBehindAOneSidedSurfaceDoesNotLightIt) {
   const SolveResult result =
       solveScene(floorScene({pointLight({0, -1, 0}, {10, 10, 10})}), quickOptions());
