@@ -29,10 +29,10 @@ Rgb fromPointLight(const Light& light, const RayCaster& rays, const Eigen::Vecto
                    const Eigen::Vector3d& n, uint64_t& raysCast) {
   const Eigen::Vector3d toLight = light.position - x;
   const double r2 = toLight.squaredNorm();
-  if (!(r2 > 0)) return {};
+  if (!(r2 > 0) || !std::isfinite(r2)) return {};  // on the point, or too far for a double
   const double r = std::sqrt(r2);
   const double cosTheta = n.dot(toLight) / r;
-  if (cosTheta <= 0) return {};
+  if (!(cosTheta > 0)) return {};
   const double falloff =
       light.type == LightType::Spot ? spotFalloff(light, light.direction.dot(-toLight) / r) : 1;
   if (falloff <= 0) return {};
