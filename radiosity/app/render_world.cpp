@@ -3,7 +3,9 @@
 #include <chrono>
 #include <optional>
 
+#include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
+#include "radiosity/scene/lights.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 
@@ -14,6 +16,17 @@ double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 }  // namespace
+
+void requireLightsSampled(const SolveOptions& solve, const RenderMethod& method, int gather) {
+  if (method.needsSolve && gather == 0) return;
+  if (findSceneLights(solve.scenePath, solve.lights, /*log=*/false).empty()) return;
+  const std::string what = method.needsSolve
+                               ? "--method " + method.name + " --gather " + std::to_string(gather)
+                               : "--method " + method.name;
+  throw InputError(what +
+                   " does not sample point, spot, directional or sky lights yet; use --method "
+                   "radiosity --gather 0");
+}
 
 RenderWorld::RenderWorld(SolveOptions solve, const std::string& cameraFile, SolutionSource source)
     : solve_(std::move(solve)), source_(std::move(source)) {
@@ -33,7 +46,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   if (method.needsSolve) {
     if (!solved_) {
       const auto t = Clock::now();
-      Scene scene = loadScene(solve_.scenePath);
+      Scene scene = loadScene(solve_.scenePath, solve_.lights);
       requireEmitter(scene);
       solved_ = std::make_unique<SolveResult>(solveOrReuse(std::move(scene), solve_, source_));
       for (const SkipNote& note : solved_->report.skipped)  // logged by solveOrReuse
@@ -51,7 +64,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   }
 
   if (!scene_) {
-    scene_ = std::make_unique<Scene>(loadScene(solve_.scenePath));
+    scene_ = std::make_unique<Scene>(loadScene(solve_.scenePath, solve_.lights));
     requireEmitter(*scene_);
     mesh_ = std::make_unique<PatchMesh>(buildPatchMesh(*scene_));
     skip("radiosity solve", "--method " + method.name + " needs only the scene's triangles");

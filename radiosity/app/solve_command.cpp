@@ -1,5 +1,6 @@
 // `radiosity solve SCENE.obj --out DIR`: the diffuse radiosity solution and its files.
 #include <memory>
+#include <vector>
 
 #include "radiosity/app/commands.h"
 #include "radiosity/app/solve_outputs.h"
@@ -7,6 +8,7 @@
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "radiosity/pipeline/solve_pipeline.h"
+#include "radiosity/scene/lights.h"
 
 namespace rad {
 
@@ -17,6 +19,29 @@ void addCommonFlags(CLI::App& command) {
 
 // Options shared by every command that solves first (solve, render, bake, view).
 void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solverName) {
+  // Scene input: the lights besides emissive polygons (read by loadScene with the scene).
+  command.add_option("--lights", options.lights.file,
+                     "Lights file (JSON: point, spot, directional, sky; see docs/physics.md); "
+                     "default: <scene>.lights.json beside the scene when it exists");
+  command
+      .add_option_function<std::vector<double>>(
+          "--sky",
+          [&options](const std::vector<double>& v) {
+            options.lights.shortcuts.push_back(skyLight({v[0], v[1], v[2]}));
+          },
+          "Uniform sky of radiance R G B (W/(m^2 sr)) over the hemisphere above +y")
+      ->expected(3)
+      ->type_name("R G B");
+  command
+      .add_option_function<std::vector<double>>(
+          "--sun",
+          [&options](const std::vector<double>& v) {
+            options.lights.shortcuts.push_back(sunLight({v[0], v[1], v[2]}, {v[3], v[4], v[5]}));
+          },
+          "Sun travelling along DX DY DZ with irradiance R G B (W/m^2 on a surface facing "
+          "it), angular diameter 0.53 degrees")
+      ->expected(6)
+      ->type_name("DX DY DZ R G B");
   command
       .add_option(
           "--solver", solverName,

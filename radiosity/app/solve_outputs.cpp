@@ -41,6 +41,11 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
   for (const Material& m : s.scene.materials) materials.push_back(m.name);
 
   const double rayTime = r.times.formFactors;
+  const auto count = [&s](const char* type) {
+    int n = 0;
+    for (const Light& light : s.scene.lights) n += lightTypeName(light.type) == type;
+    return n;
+  };
   return {
       {"scene",
        {{"file", options.scenePath},
@@ -68,6 +73,15 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
         {"specular_rays", r.specularRays},
         {"rays_per_second", rayTime > 0 ? r.raysCast / rayTime : 0.0},
         {"seed", options.seed}}},
+      {"lights",
+       {{"point", count("point")},
+        {"spot", count("spot")},
+        {"directional", count("directional")},
+        {"sky", count("sky")},
+        {"direct_light_rays", r.directLightRays},
+        {"note",
+         "the first shot of these lights at each element's receiver points enters the solve "
+         "as emission: emitted_power includes its reflected part"}}},
       {"solver",
        {{"name", r.solverName},
         {"iterations", r.iterations},

@@ -179,7 +179,7 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
   options.scenePath = args.input;
   finishSolveOptions(command, options, solverName);
   const SolveResult result =
-      solveOrReuse(loadScene(options.scenePath), options, {args.solutionDir, ""});
+      solveOrReuse(loadScene(options.scenePath, options.lights), options, {args.solutionDir, ""});
   const Solution& solution = result.solution;
   cameraFor(options.scenePath);
   const ToneMap toneMap =

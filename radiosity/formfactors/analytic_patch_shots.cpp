@@ -13,6 +13,7 @@
 #include "radiosity/core/rng.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/point_to_polygon.h"
+#include "radiosity/formfactors/receiver_points.h"
 
 namespace rad {
 namespace {
@@ -51,9 +52,7 @@ void AnalyticPatchShots::updateElementGeometry(int e) {
   const auto c = mesh_.corners(e);
   normals_[e] = mesh_.normal(e);
   centroids_[e] = (c[0] + c[1] + c[2]) / 3.0;
-  // Degree-2 Gauss points (barycentric 2/3, 1/6, 1/6): interior, so never on a shared edge.
-  for (int k = 0; k < 3; ++k)
-    receiverPoints_[e][k] = (4.0 * c[k] + c[(k + 1) % 3] + c[(k + 2) % 3]) / 6.0;
+  receiverPoints_[e] = receiverPoints(c);  // the Gauss points (receiver_points.h)
 }
 
 void AnalyticPatchShots::meshChanged(const std::vector<int>& changed) {

@@ -25,7 +25,8 @@ AdaptiveRefinement::AdaptiveRefinement(const SolveOptions& options, const PatchM
 }
 
 bool AdaptiveRefinement::refine(int pass, Solution& solution, FormFactorStage& formFactors,
-                                Solver& solver, SolveReport& report) {
+                                DirectLightStage& directLight, Solver& solver,
+                                SolveReport& report) {
   if (!enabled_ || pass == passes_) return false;
   auto* refinable = dynamic_cast<RefinableSolver*>(&solver);
   RAD_CHECK_MSG(refinable != nullptr, "adaptive refinement needs a refinable solver");
@@ -51,6 +52,7 @@ bool AdaptiveRefinement::refine(int pass, Solution& solution, FormFactorStage& f
       refinementTarget(startElements_, options_.maxElements, pass, std::max(1, passes_));
   const std::vector<int> changed = refineElements(mesh, selected, options_, target);
   solution.problem = makeProblem(solution.scene, mesh);
+  directLight.meshChanged(changed, solution.problem);
   formFactors.meshChanged(changed);
   refinable->elementsChanged(changed,
                              [&](int e, int s) { return formFactors.pointFactorsCached(e, s); });

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "meshing/adaptive_refinement.h"
+#include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_options.h"
@@ -20,8 +21,9 @@ class AdaptiveRefinement {
   // Refinement pass `pass` (0-based) on a converged solution: true when elements were split and
   // the problem, the form factors and the solver were updated, so the solve goes on; false when
   // refinement is off or over (passes done, nothing to split, or the budget reached).
-  bool refine(int pass, Solution& solution, FormFactorStage& formFactors, Solver& solver,
-              SolveReport& report);
+  // The lights' first shot is recomputed on the split elements.
+  bool refine(int pass, Solution& solution, FormFactorStage& formFactors,
+              DirectLightStage& directLight, Solver& solver, SolveReport& report);
   // Notes in the report what the last pass left unsplit.
   void finish(SolveReport& report) const;
 

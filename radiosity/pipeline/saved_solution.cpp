@@ -77,6 +77,18 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
     f.add(m.ior);
     f.add(static_cast<int>(m.kind));
   }
+  f.add(scene.lights.size());
+  for (const Light& l : scene.lights) {
+    f.add(static_cast<int>(l.type));
+    for (const Eigen::Vector3d* v : {&l.position, &l.direction, &l.up})
+      for (int k = 0; k < 3; ++k) f.add((*v)[k]);
+    f.add(l.intensity);
+    f.add(l.irradiance);
+    f.add(l.radiance);
+    f.add(l.cosOuter);
+    f.add(l.cosInner);
+    f.add(l.angularDiameterDegrees);
+  }
   f.add(static_cast<int>(o.solver));
   f.add(o.raysPerElement);
   f.add(o.maxArea);

@@ -57,6 +57,7 @@ struct SolveReport {
   int rowsComputed = 0;
   uint64_t specularRays = 0;  // continuations through mirrors and glass
   uint64_t raysCast = 0;
+  uint64_t directLightRays = 0;  // the first shot of the scene's lights: shadow rays cast
   int threads = 0;
   bool reusedSavedSolution = false;
   StageTimes times;

@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 
+#include "radiosity/scene/lights.h"
 #include "radiosity/solvers/solver_factory.h"
 
 namespace rad {
@@ -19,6 +20,7 @@ std::string formFactorMethodName(FormFactorMethod method);
 struct SolveOptions {
   std::string scenePath;
   std::string outputDir;
+  LightInput lights;  // scene input: --lights FILE (default the sidecar), --sky, --sun
   SolverKind solver = SolverKind::Progressive;
   int raysPerElement = 1024;  // hemisphere: rays per element row
   double maxArea = 0;         // scene units²; 0: totalArea / targetElements

@@ -10,6 +10,7 @@
 
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/mesh_stage.h"
@@ -85,7 +86,7 @@ void warnIfNotConverged(const IterationLimits& limits, const Solution& solution,
 
 SolveResult runSolve(const SolveOptions& options) {
   const auto start = Clock::now();
-  Scene scene = loadScene(options.scenePath);
+  Scene scene = loadScene(options.scenePath, options.lights);
   const double loadSeconds = since(start);
   SolveResult result = solveScene(std::move(scene), options);
   result.report.times.load = loadSeconds;
@@ -118,6 +119,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   const RayCaster rays(*solution.mesh);
   report.times.bvh = since(t);
   solution.problem = makeProblem(solution.scene, *solution.mesh);
+  DirectLightStage directLight(solution.scene, *solution.mesh, rays, options);
+  directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
   noteBlackElements(solution, report);
   FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options);
   throwIfInterrupted();
@@ -133,15 +136,18 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   for (int pass = 0;; ++pass) {
     report.stoppedBy = iterate(*solver, limits, keepTerms ? &solution.bounceTerms : nullptr);
     report.converged = converged(report.stoppedBy);
-    if (!report.converged || !refinement.refine(pass, solution, formFactors, *solver, report))
+    if (!report.converged ||
+        !refinement.refine(pass, solution, formFactors, directLight, *solver, report))
       break;
   }
   refinement.finish(report);
   const double solveAndRows = since(t);
   formFactors.report(report, options.solver);
+  directLight.report(report);
   report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
 
   keepSolution(*solver, formFactors.analytic() && options.receiverPoints == 3, solution, report);
+  directLight.addPointVariation(solution.problem, solution.pointRadiosity);
   warnIfNotConverged(limits, solution, report);
   report.times.total = since(start);
   return result;

@@ -57,11 +57,7 @@ void validateCamera(const Camera& c, const std::string& source) {
 }
 
 std::string cameraSidecarPath(const std::string& scenePath) {
-  std::string base = scenePath;
-  const size_t slash = base.find_last_of('/');
-  const size_t dot = base.find_last_of('.');
-  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) base.resize(dot);
-  return base + ".camera.json";
+  return sidecarPath(scenePath, ".camera.json");
 }
 
 Camera loadCamera(const std::string& path) {

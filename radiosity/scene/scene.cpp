@@ -26,10 +26,11 @@ int Scene::polygonsWithUvs() const {
 }
 
 void requireEmitter(const Scene& scene) {
-  if (scene.emitterCount() > 0) return;
+  if (scene.emitterCount() > 0 || !scene.lights.empty()) return;
   throw InputError(scene.sourcePath, 0,
-                   "no emitter: no polygon uses a material with positive Ke, so the scene would "
-                   "stay dark");
+                   "no emitter: no polygon uses a material with positive Ke and there is no "
+                   "light (--lights, --sky, --sun, or a .lights.json beside the scene), so the "
+                   "scene would stay dark");
 }
 
 }  // namespace rad

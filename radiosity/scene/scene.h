@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "radiosity/scene/lights.h"
 #include "radiosity/scene/material.h"
 
 namespace rad {
@@ -26,6 +27,7 @@ struct Scene {
   std::vector<Eigen::Vector3d> positions;
   std::vector<ScenePolygon> polygons;
   std::vector<Material> materials;
+  std::vector<Light> lights;  // besides emissive polygons (a lights file, --sky, --sun)
 
   int skippedDegenerateFaces = 0;    // zero-area or repeated-vertex faces, skipped with a warning
   bool usedDefaultMaterial = false;  // some faces had no `usemtl`
@@ -35,7 +37,8 @@ struct Scene {
   int polygonsWithUvs() const;  // polygons whose corners all have texture coordinates
 };
 
-// Throws InputError naming the scene file when no polygon emits (whatever format it came from).
+// Throws InputError naming the scene file when no polygon emits and the scene has no light
+// (whatever format it came from).
 void requireEmitter(const Scene& scene);
 
 }  // namespace rad

@@ -76,6 +76,12 @@ std::string extensionOf(const std::string& path) {
 
 }  // namespace
 
+Scene loadScene(const std::string& path, const LightInput& lights) {
+  Scene scene = loadScene(path);
+  scene.lights = findSceneLights(path, lights);
+  return scene;
+}
+
 std::string readableSceneFormats() {
   std::string list;
   for (const SceneFormat& f : kFormats)

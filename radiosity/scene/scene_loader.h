@@ -17,6 +17,10 @@ namespace rad {
 //   - whatever the format's loader throws for bad content.
 Scene loadScene(const std::string& path);
 
+// The scene with its lights (findSceneLights, lights.h): the one loader of every command that
+// solves or renders.
+Scene loadScene(const std::string& path, const LightInput& lights);
+
 // The formats loadScene reads, for messages and --help: "OBJ (.obj)".
 std::string readableSceneFormats();
 

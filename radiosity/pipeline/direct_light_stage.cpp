@@ -1,0 +1,184 @@
+#include "radiosity/pipeline/direct_light_stage.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "radiosity/core/log.h"
+#include "radiosity/core/rng.h"
+#include "radiosity/formfactors/hemisphere_sampling.h"
+#include "radiosity/formfactors/receiver_points.h"
+
+namespace rad {
+namespace {
+
+// The spot's falloff: 0 outside the outer cone, 1 inside the inner one, smoothstep in cos between
+// (a hard edge when the cones are equal).
+double spotFalloff(const Light& light, double cosAngle) {
+  if (cosAngle < light.cosOuter) return 0;
+  if (cosAngle >= light.cosInner) return 1;
+  const double t = (cosAngle - light.cosOuter) / (light.cosInner - light.cosOuter);
+  return t * t * (3 - 2 * t);
+}
+
+Rgb fromPointLight(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
+                   const Eigen::Vector3d& n, uint64_t& raysCast) {
+  const Eigen::Vector3d toLight = light.position - x;
+  const double r2 = toLight.squaredNorm();
+  if (!(r2 > 0) || !std::isfinite(r2)) return {};  // on the point, or too far for a double
+  const double r = std::sqrt(r2);
+  const double cosTheta = n.dot(toLight) / r;
+  if (!(cosTheta > 0)) return {};
+  const double falloff =
+      light.type == LightType::Spot ? spotFalloff(light, light.direction.dot(-toLight) / r) : 1;
+  if (falloff <= 0) return {};
+  const Eigen::Vector3d origin = rays.liftOff(x, n, toLight);
+  ++raysCast;
+  if (rays.occluded(origin, light.position - origin, 1.0 - 1e-6)) return {};
+  return light.intensity * (falloff * cosTheta / r2);
+}
+
+Rgb fromDirectional(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
+                    const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast) {
+  const Eigen::Vector3d toSun = -light.direction;
+  const double inf = std::numeric_limits<double>::infinity();
+  if (light.angularDiameterDegrees <= 0) {
+    const double cosTheta = n.dot(toSun);
+    if (cosTheta <= 0) return {};
+    ++raysCast;
+    if (rays.occluded(rays.liftOff(x, n, toSun), toSun, inf)) return {};
+    return light.irradiance * cosTheta;
+  }
+  // Directions uniform in solid angle over the sun's disc, stratified 4 × 4.
+  const double cosHalf = std::cos(0.5 * light.angularDiameterDegrees * M_PI / 180);
+  const Frame frame(toSun);
+  Rng rng(key);
+  double sum = 0;
+  for (int k = 0; k < kSunDiscRays; ++k) {
+    const double u1 = (k % 4 + rng.uniform()) / 4, u2 = (k / 4 + rng.uniform()) / 4;
+    const double cosA = 1 - u1 * (1 - cosHalf);
+    const double sinA = std::sqrt(std::max(0.0, 1 - cosA * cosA));
+    const Eigen::Vector3d w =
+        frame.toWorld({sinA * std::cos(2 * M_PI * u2), sinA * std::sin(2 * M_PI * u2), cosA});
+    const double cosTheta = n.dot(w);
+    if (cosTheta <= 0) continue;
+    ++raysCast;
+    if (!rays.occluded(rays.liftOff(x, n, w), w, inf)) sum += cosTheta;
+  }
+  return light.irradiance * (sum / kSunDiscRays);
+}
+
+Rgb fromSky(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
+            const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast) {
+  const Frame frame(n);
+  Rng rng(key);
+  const double inf = std::numeric_limits<double>::infinity();
+  int open = 0;
+  for (int k = 0; k < kSkyRays; ++k) {
+    const double u1 = (k % 8 + rng.uniform()) / 8, u2 = (k / 8 + rng.uniform()) / 8;
+    const Eigen::Vector3d w = frame.toWorld(cosineWeightedDirection(u1, u2));
+    if (w.dot(light.up) <= 0) continue;  // below the horizon: the ground is black
+    ++raysCast;
+    open += !rays.occluded(rays.liftOff(x, n, w), w, inf);
+  }
+  return light.radiance * (M_PI * open / kSkyRays);
+}
+
+}  // namespace
+
+Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
+                     const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast) {
+  switch (light.type) {
+    case LightType::Point:
+    case LightType::Spot:
+      return fromPointLight(light, rays, x, n, raysCast);
+    case LightType::Directional:
+      return fromDirectional(light, rays, x, n, key, raysCast);
+    case LightType::Sky:
+      return fromSky(light, rays, x, n, key, raysCast);
+  }
+  return {};
+}
+
+DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
+                                   const SolveOptions& options)
+    : scene_(scene),
+      mesh_(mesh),
+      rays_(rays),
+      seed_(options.seed),
+      receiverPoints_(options.receiverPoints) {}
+
+void DirectLightStage::compute(int e) {
+  const Eigen::Vector3d n = mesh_.normal(e);
+  const auto points = receiverPoints(mesh_.corners(e), receiverPoints_);
+  const int count = receiverPoints_ == 1 ? 1 : 3;
+  uint64_t cast = 0;
+  std::array<Rgb, 3> atPoints{};
+  for (size_t l = 0; l < scene_.lights.size(); ++l)
+    for (int k = 0; k < count; ++k)
+      atPoints[k] += directIrradiance(scene_.lights[l], rays_, points[k], n,
+                                      streamKey(seed_ ^ 0x6c69676874ull, static_cast<uint64_t>(e),
+                                                l * 3 + static_cast<uint64_t>(k)),
+                                      cast);
+  if (count == 1) atPoints[1] = atPoints[2] = atPoints[0];
+  pointIrradiance_[e] = atPoints;
+  irradiance_[e] = (atPoints[0] + atPoints[1] + atPoints[2]) / 3;
+  elementRays_[e] = cast;
+}
+
+void DirectLightStage::addEmission(RadiosityProblem& problem) const {
+  for (int e = 0; e < mesh_.elementCount(); ++e)
+    problem.emission[e] += problem.reflectance[e] * irradiance_[e];
+}
+
+void DirectLightStage::apply(RadiosityProblem& problem) {
+  if (scene_.lights.empty()) return;
+  const auto start = std::chrono::steady_clock::now();
+  const int n = mesh_.elementCount();
+  irradiance_.assign(n, Rgb());
+  pointIrradiance_.assign(n, {});
+  elementRays_.assign(n, 0);
+  tbb::parallel_for(0, n, [&](int e) { compute(e); });
+  raysCast_ = std::accumulate(elementRays_.begin(), elementRays_.end(), uint64_t{0});
+  addEmission(problem);
+  if (std::all_of(irradiance_.begin(), irradiance_.end(), [](const Rgb& e) { return e.isZero(); }))
+    logWarning(
+        "the lights reach no surface from its front (all shadowed, behind or outside "
+        "their cones): they add no light");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  logInfo("direct light: " + std::to_string(scene_.lights.size()) + " light(s) at " +
+          std::to_string(n) + " elements, " + std::to_string(raysCast_) + " shadow rays, " +
+          formatNumber(seconds) + " s");
+}
+
+void DirectLightStage::meshChanged(const std::vector<int>& changed, RadiosityProblem& problem) {
+  if (scene_.lights.empty()) return;
+  const int n = mesh_.elementCount();
+  irradiance_.resize(n);
+  pointIrradiance_.resize(n);
+  elementRays_.resize(n, 0);
+  tbb::parallel_for(size_t{0}, changed.size(), [&](size_t i) {
+    const uint64_t before = elementRays_[changed[i]];
+    compute(changed[i]);
+    elementRays_[changed[i]] += before;  // keep counting the rays already cast
+  });
+  raysCast_ = std::accumulate(elementRays_.begin(), elementRays_.end(), uint64_t{0});
+  addEmission(problem);
+}
+
+void DirectLightStage::addPointVariation(const RadiosityProblem& problem,
+                                         std::vector<std::array<Rgb, 3>>& pointRadiosity) const {
+  if (scene_.lights.empty() || pointRadiosity.size() != irradiance_.size()) return;
+  for (size_t e = 0; e < pointRadiosity.size(); ++e)
+    for (int k = 0; k < 3; ++k)
+      pointRadiosity[e][k] += problem.reflectance[e] * (pointIrradiance_[e][k] - irradiance_[e]);
+}
+
+void DirectLightStage::report(SolveReport& report) const { report.directLightRays = raysCast_; }
+
+}  // namespace rad

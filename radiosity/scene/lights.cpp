@@ -1,0 +1,225 @@
+#include "radiosity/scene/lights.h"
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
+#include "radiosity/scene/json_file.h"
+
+namespace rad {
+namespace {
+
+constexpr double kDegrees = M_PI / 180;
+
+// A key as a JSON pointer token (RFC 6901): "~" → "~0", "/" → "~1".
+std::string pointerToken(const std::string& key) {
+  std::string out;
+  for (char c : key) out += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+  return out;
+}
+
+// Reads one light's values, each error naming the file, the line and the JSON pointer.
+class LightReader {
+ public:
+  LightReader(const std::string& path, const std::string& text, const nlohmann::json& j,
+              std::string pointer)
+      : path_(path), text_(text), j_(j), pointer_(std::move(pointer)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    const std::string at = key.empty() ? pointer_ : pointer_ + "/" + pointerToken(key);
+    throw InputError(path_, lineOfPointer(text_, at), at + ": " + what);
+  }
+
+  void allowOnly(std::initializer_list<const char*> known) const {
+    for (const auto& item : j_.items()) {
+      bool ok = false;
+      for (const char* k : known) ok = ok || item.key() == k;
+      if (ok) continue;
+      std::string list;
+      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      fail(item.key(), "unknown key \"" + item.key() + "\" for a " + j_["type"].get<std::string>() +
+                           " light (known: " + list + ")");
+    }
+  }
+
+  bool has(const std::string& key) const { return j_.contains(key); }
+
+  const nlohmann::json& at(const std::string& key) const {
+    if (!j_.contains(key)) fail("", "missing key \"" + key + "\"");
+    return j_[key];
+  }
+
+  double number(const std::string& key) const {
+    const auto& v = at(key);
+    if (!v.is_number()) fail(key, "must be a number");
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) fail(key, "is not finite");
+    return x;
+  }
+
+  Eigen::Vector3d vector(const std::string& key) const {
+    const auto& v = at(key);
+    if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 numbers");
+    Eigen::Vector3d out;
+    for (int k = 0; k < 3; ++k) {
+      if (!v[k].is_number()) fail(key, "must be an array of 3 numbers");
+      out[k] = v[k].get<double>();
+      if (!std::isfinite(out[k])) fail(key, "is not finite");
+    }
+    return out;
+  }
+
+  Eigen::Vector3d direction(const std::string& key) const {
+    const Eigen::Vector3d d = vector(key);
+    if (!(d.norm() > 0) || !std::isfinite(d.norm())) fail(key, "must be a non-zero direction");
+    return d.normalized();
+  }
+
+  Rgb colour(const std::string& key) const {
+    const Eigen::Vector3d v = vector(key);
+    if (v.minCoeff() < 0) fail(key, "must not be negative");
+    return {v.x(), v.y(), v.z()};
+  }
+
+ private:
+  const std::string& path_;
+  const std::string& text_;
+  const nlohmann::json& j_;
+  std::string pointer_;
+};
+
+Light readLight(const LightReader& r, const std::string& type) {
+  Light light;
+  if (type == "point") {
+    r.allowOnly({"type", "position", "intensity", "comment"});
+    light.type = LightType::Point;
+    light.position = r.vector("position");
+    light.intensity = r.colour("intensity");
+  } else if (type == "spot") {
+    r.allowOnly({"type", "position", "direction", "intensity", "cone_degrees", "inner_cone_degrees",
+                 "comment"});
+    light.type = LightType::Spot;
+    light.position = r.vector("position");
+    light.direction = r.direction("direction");
+    light.intensity = r.colour("intensity");
+    const double outer = r.number("cone_degrees");
+    if (!(outer > 0 && outer <= 90)) r.fail("cone_degrees", "must be in (0, 90] degrees");
+    const double inner = r.has("inner_cone_degrees") ? r.number("inner_cone_degrees") : outer;
+    if (!(inner > 0 && inner <= 90)) r.fail("inner_cone_degrees", "must be in (0, 90] degrees");
+    if (inner > outer)
+      r.fail("inner_cone_degrees", "must not exceed cone_degrees (the outer half-angle)");
+    light.cosOuter = std::cos(outer * kDegrees);
+    light.cosInner = std::cos(inner * kDegrees);
+  } else if (type == "directional") {
+    r.allowOnly({"type", "direction", "irradiance", "angular_diameter_degrees", "comment"});
+    light.type = LightType::Directional;
+    light.direction = r.direction("direction");
+    light.irradiance = r.colour("irradiance");
+    if (r.has("angular_diameter_degrees")) {
+      light.angularDiameterDegrees = r.number("angular_diameter_degrees");
+      if (!(light.angularDiameterDegrees >= 0 && light.angularDiameterDegrees < 90))
+        r.fail("angular_diameter_degrees", "must be in [0, 90) degrees");
+    }
+  } else if (type == "sky") {
+    r.allowOnly({"type", "radiance", "up", "comment"});
+    light.type = LightType::Sky;
+    light.radiance = r.colour("radiance");
+    if (r.has("up")) light.up = r.direction("up");
+  } else if (type == "environment") {
+    r.fail("type",
+           "light type \"environment\" is not supported yet (supported: point, spot, "
+           "directional, sky)");
+  } else {
+    r.fail("type", "unknown light type \"" + type + "\" (known: point, spot, directional, sky)");
+  }
+  return light;
+}
+
+}  // namespace
+
+std::string lightTypeName(LightType type) {
+  switch (type) {
+    case LightType::Point:
+      return "point";
+    case LightType::Spot:
+      return "spot";
+    case LightType::Directional:
+      return "directional";
+    case LightType::Sky:
+      return "sky";
+  }
+  return "?";
+}
+
+std::vector<Light> loadLights(const std::string& path) {
+  const JsonFile file = readJsonFile(path, "lights");
+  const nlohmann::json& j = file.value;
+  if (!j.is_object() || !j.contains("lights"))
+    throw InputError(path, 1, "a lights file holds one JSON object with a \"lights\" array");
+  for (const auto& item : j.items())
+    if (item.key() != "lights" && item.key() != "comment")
+      throw InputError(path, lineOfPointer(file.text, "/" + pointerToken(item.key())),
+                       "/" + pointerToken(item.key()) + ": unknown key (known: lights, comment)");
+  const nlohmann::json& list = j["lights"];
+  if (!list.is_array())
+    throw InputError(path, lineOfPointer(file.text, "/lights"), "/lights: must be an array");
+  std::vector<Light> lights;
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::string pointer = "/lights/" + std::to_string(i);
+    const LightReader reader(path, file.text, list[i], pointer);
+    if (!list[i].is_object()) reader.fail("", "each light must be a JSON object");
+    if (!list[i].contains("type") || !list[i]["type"].is_string())
+      reader.fail("type", "each light needs a \"type\" string (point, spot, directional, sky)");
+    lights.push_back(readLight(reader, list[i]["type"].get<std::string>()));
+  }
+  return lights;
+}
+
+std::string lightsSidecarPath(const std::string& scenePath) {
+  return sidecarPath(scenePath, ".lights.json");
+}
+
+Light skyLight(const Rgb& radiance) {
+  if (!radiance.isFinite() || radiance.minComponent() < 0)
+    throw InputError("--sky: the radiance must be finite and not negative");
+  Light light;
+  light.type = LightType::Sky;
+  light.radiance = radiance;
+  return light;
+}
+
+Light sunLight(const Eigen::Vector3d& direction, const Rgb& irradiance) {
+  if (!irradiance.isFinite() || irradiance.minComponent() < 0)
+    throw InputError("--sun: the irradiance must be finite and not negative");
+  if (!(direction.norm() > 0) || !std::isfinite(direction.norm()))
+    throw InputError("--sun: the direction must be finite and non-zero");
+  Light light;
+  light.type = LightType::Directional;
+  light.direction = direction.normalized();
+  light.irradiance = irradiance;
+  light.angularDiameterDegrees = 0.53;
+  return light;
+}
+
+std::vector<Light> findSceneLights(const std::string& scenePath, const LightInput& input,
+                                   bool log) {
+  std::vector<Light> lights;
+  std::string file = input.file;
+  std::error_code error;
+  if (file.empty() && std::filesystem::exists(lightsSidecarPath(scenePath), error))
+    file = lightsSidecarPath(scenePath);
+  if (!file.empty()) {
+    lights = loadLights(file);
+    if (log)
+      logInfo("lights: " + std::to_string(lights.size()) + " from " + file +
+              (input.file.empty() ? " (beside the scene)" : ""));
+  }
+  lights.insert(lights.end(), input.shortcuts.begin(), input.shortcuts.end());
+  if (log && !input.shortcuts.empty())
+    logInfo("lights: " + std::to_string(input.shortcuts.size()) + " from --sky/--sun");
+  return lights;
+}
+
+}  // namespace rad

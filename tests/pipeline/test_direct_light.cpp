@@ -1,0 +1,296 @@
+// The first shot of point, spot, directional and sky lights in the radiosity solve, against
+// analytic answers: B = ρ E_d on surfaces that see no other surface, E_d evaluated by the formula
+// at the element's receiver points (so exact up to rounding), and the sky's Monte Carlo estimate
+// within 4σ of its expectation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/formfactors/receiver_points.h"
+#include "radiosity/pipeline/solve_pipeline.h"
+#include "radiosity/scene/scene.h"
+
+namespace rad {
+namespace {
+
+const Rgb kRho{0.5, 0.4, 0.3};
+
+// Adds a one-sided quad (corners counter-clockwise seen from the front) with material `material`.
+void addQuad(Scene& scene, std::vector<Eigen::Vector3d> corners, int material = 0) {
+  ScenePolygon polygon;
+  for (const auto& c : corners) {
+    polygon.vertices.push_back(static_cast<int>(scene.positions.size()));
+    scene.positions.push_back(c);
+  }
+  polygon.material = material;
+  scene.polygons.push_back(polygon);
+}
+
+Scene sceneWith(const std::vector<Light>& lights) {
+  Scene scene;
+  scene.sourcePath = "test";
+  Material grey;
+  grey.name = "grey";
+  grey.diffuse = kRho;
+  scene.materials.push_back(grey);
+  scene.lights = lights;
+  return scene;
+}
+
+// The floor y = 0 over [-1, 1]², facing up.
+Scene floorScene(const std::vector<Light>& lights) {
+  Scene scene = sceneWith(lights);
+  addQuad(scene, {{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}});
+  return scene;
+}
+
+SolveOptions quickOptions(int elements = 128) {
+  SolveOptions options;
+  options.targetElements = elements;
+  options.raysPerElement = 64;
+  options.threads = 2;
+  return options;
+}
+
+Light pointLight(const Eigen::Vector3d& position, const Rgb& intensity) {
+  Light light;
+  light.type = LightType::Point;
+  light.position = position;
+  light.intensity = intensity;
+  return light;
+}
+
+// I cosθ / r² at x on a surface with normal n, averaged over the element's receiver points.
+Rgb pointAverage(const Light& light, const std::array<Eigen::Vector3d, 3>& corners,
+                 const Eigen::Vector3d& n) {
+  Rgb sum;
+  for (const auto& x : receiverPoints(corners)) {
+    const Eigen::Vector3d d = light.position - x;
+    sum += light.intensity * (std::max(0.0, n.dot(d.normalized())) / d.squaredNorm());
+  }
+  return sum / 3;
+}
+
+void expectNear(const Rgb& got, const Rgb& want, double relative, int element) {
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(got[c], want[c], relative * std::abs(want[c]) + 1e-300)
+        << "element " << element << " channel " << c;
+}
+
+TEST(DirectLight, PointLightOverAPlaneGivesRhoICosOverRSquaredAtTheReceiverPoints) {
+  const Light light = pointLight({0.3, 0.8, -0.2}, {10, 20, 30});
+  const SolveResult result = solveScene(floorScene({light}), quickOptions());
+  const Solution& s = result.solution;
+  ASSERT_GT(s.mesh->elementCount(), 50);
+  for (int e = 0; e < s.mesh->elementCount(); ++e)
+    expectNear(s.radiosity[e], kRho * pointAverage(light, s.mesh->corners(e), s.mesh->normal(e)),
+               1e-12, e);
+  EXPECT_EQ(result.report.directLightRays, 3u * s.mesh->elementCount());
+}
+
+// Where the solution keeps B at the receiver points (analytic factors, 3 points), each point has
+// its own direct light, not the element's mean.
+TEST(DirectLight, ReceiverPointValuesShowTheDirectLightAtEachPoint) {
+  const Light light = pointLight({0.3, 0.4, -0.2}, {10, 20, 30});
+  SolveOptions options = quickOptions();
+  options.formFactors = FormFactorMethod::Analytic;
+  options.shadowRays = 1;
+  const SolveResult result = solveScene(floorScene({light}), options);
+  const Solution& s = result.solution;
+  ASSERT_EQ(s.pointRadiosity.size(), static_cast<size_t>(s.mesh->elementCount()));
+  for (int e = 0; e < s.mesh->elementCount(); ++e) {
+    const auto points = receiverPoints(s.mesh->corners(e));
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d d = light.position - points[k];
+      const Rgb want = kRho * light.intensity * (d.normalized().y() / d.squaredNorm());
+      expectNear(s.pointRadiosity[e][k], want, 1e-12, e);
+    }
+  }
+}
+
+TEST(DirectLight, ALightBehindAOneSidedSurfaceDoesNotLightIt) {
+  const SolveResult result =
+      solveScene(floorScene({pointLight({0, -1, 0}, {10, 10, 10})}), quickOptions());
+  for (const Rgb& b : result.solution.radiosity) EXPECT_TRUE(b.isZero());
+  EXPECT_EQ(result.report.directLightRays, 0u);  // back-facing points get no rays
+}
+
+TEST(DirectLight, SpotIsZeroOutsideItsOuterConeAndAPointLightInsideItsInnerCone) {
+  Light spot = pointLight({0, 1, 0}, {5, 5, 5});
+  spot.type = LightType::Spot;
+  spot.direction = {0, -1, 0};
+  spot.cosOuter = std::cos(30 * M_PI / 180);
+  spot.cosInner = std::cos(20 * M_PI / 180);
+  const SolveResult result = solveScene(floorScene({spot}), quickOptions(512));
+  const Solution& s = result.solution;
+  int outside = 0, inside = 0, between = 0;
+  for (int e = 0; e < s.mesh->elementCount(); ++e) {
+    double minCos = 1, maxCos = 0;
+    for (const auto& x : receiverPoints(s.mesh->corners(e))) {
+      const double c = spot.direction.dot((x - spot.position).normalized());
+      minCos = std::min(minCos, c);
+      maxCos = std::max(maxCos, c);
+    }
+    const Rgb asPoint = kRho * pointAverage(spot, s.mesh->corners(e), s.mesh->normal(e));
+    if (maxCos < spot.cosOuter) {
+      ++outside;
+      EXPECT_TRUE(s.radiosity[e].isZero()) << "element " << e;
+    } else if (minCos > spot.cosInner) {
+      ++inside;
+      expectNear(s.radiosity[e], asPoint, 1e-12, e);
+    } else {
+      ++between;
+      EXPECT_GE(s.radiosity[e].r, 0);
+      EXPECT_LT(s.radiosity[e].r, asPoint.r);
+    }
+  }
+  EXPECT_GT(outside, 0);
+  EXPECT_GT(inside, 0);
+  EXPECT_GT(between, 0);
+}
+
+// A plane tilted 40° about x, its normal 40° from the sun's direction.
+Scene tiltedScene(const std::vector<Light>& lights) {
+  Scene scene = sceneWith(lights);
+  const double a = 40 * M_PI / 180;
+  const Eigen::Vector3d u(1, 0, 0), v(0, std::sin(a), -std::cos(a));  // n = u × v
+  addQuad(scene, {-u - v, u - v, u + v, -u + v});
+  return scene;
+}
+
+TEST(DirectLight, DirectionalLightGivesRhoECosThetaOnATiltedPlane) {
+  for (const double diameter : {0.0, 0.53}) {
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = {0, -1, 0};
+    sun.irradiance = {100, 200, 300};
+    sun.angularDiameterDegrees = diameter;
+    const SolveResult result = solveScene(tiltedScene({sun}), quickOptions());
+    const Solution& s = result.solution;
+    // Every ray over the sun's disc (half-angle h) has a cosine within cosθ·(1 ± tanθ·sin h + h²)
+    // of the centre's, so their mean does too; a point sun is exact.
+    const double h = 0.5 * diameter * M_PI / 180;
+    const double tolerance = diameter > 0 ? std::tan(40 * M_PI / 180) * std::sin(h) + h * h : 1e-12;
+    for (int e = 0; e < s.mesh->elementCount(); ++e) {
+      const double cosTheta = s.mesh->normal(e).dot(-sun.direction);
+      ASSERT_NEAR(cosTheta, std::cos(40 * M_PI / 180), 1e-12);
+      expectNear(s.radiosity[e], kRho * sun.irradiance * cosTheta, tolerance, e);
+    }
+  }
+}
+
+Light sky(const Rgb& radiance) {
+  Light light;
+  light.type = LightType::Sky;
+  light.radiance = radiance;
+  return light;
+}
+
+TEST(DirectLight, UniformSkyOnAnOpenUpwardPlaneIsRhoPiL) {
+  const Light light = sky({1, 2, 3});
+  const SolveResult result = solveScene(floorScene({light}), quickOptions());
+  for (int e = 0; e < result.solution.mesh->elementCount(); ++e)
+    expectNear(result.solution.radiosity[e], kRho * light.radiance * M_PI, 1e-12, e);
+}
+
+TEST(DirectLight, UniformSkyOnALoneVerticalQuadIsHalfRhoPiLWithinFourSigma) {
+  Scene scene = sceneWith({sky({1, 1, 1})});
+  addQuad(scene, {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}});  // facing +z
+  const SolveResult result = solveScene(scene, quickOptions());
+  const Solution& s = result.solution;
+  const int n = s.mesh->elementCount();
+  // Each ray is a Bernoulli trial of p = 1/2 (above the horizon or not): σ of a mean of m trials
+  // is 0.5/√m (stratification only lowers it; here the horizon falls on strata boundaries).
+  const double perElement = 4 * 0.5 / std::sqrt(3.0 * 64);
+  double sum = 0, area = 0;
+  for (int e = 0; e < n; ++e) {
+    const double fraction = s.radiosity[e].r / (kRho.r * M_PI);
+    EXPECT_NEAR(fraction, 0.5, perElement) << "element " << e;
+    sum += fraction * s.mesh->area(e);
+    area += s.mesh->area(e);
+  }
+  EXPECT_NEAR(sum / area, 0.5, 4 * 0.5 / std::sqrt(3.0 * 64 * n));
+}
+
+// A plane tilted β = 40° from up sees the fraction (1 + cos β) / 2 of its cosine-weighted
+// directions above the horizon. The rays come from streams keyed by (seed, element, point): the
+// same seed gives the same solution on any thread count, another seed another estimate.
+TEST(DirectLight, SkyOnATiltedPlaneIsWithinFourSigmaAndDependsOnTheSeedOnly) {
+  const Scene scene = tiltedScene({sky({1, 1, 1})});
+  SolveOptions one = quickOptions(), two = quickOptions(), other = quickOptions();
+  one.threads = 1;
+  other.seed = 7;
+  const SolveResult first = solveScene(scene, one);
+  const auto& a = first.solution.radiosity;
+  const auto b = solveScene(scene, two).solution.radiosity;
+  const auto c = solveScene(scene, other).solution.radiosity;
+  ASSERT_EQ(a.size(), b.size());
+  bool differs = false;
+  for (size_t e = 0; e < a.size(); ++e) {
+    EXPECT_EQ(a[e].r, b[e].r) << "element " << e;
+    differs |= a[e].r != c[e].r;
+  }
+  EXPECT_TRUE(differs);
+  const double p = (1 + std::cos(40 * M_PI / 180)) / 2;
+  double mean = 0;
+  const PatchMesh& mesh = *first.solution.mesh;
+  for (size_t e = 0; e < a.size(); ++e)
+    mean += a[e].r / (kRho.r * M_PI) * mesh.area(static_cast<int>(e)) / mesh.totalArea();
+  EXPECT_NEAR(mean, p, 4 * std::sqrt(p * (1 - p) / (3.0 * 64 * a.size())));
+}
+
+TEST(DirectLight, UniformSkyDoesNotEnterAClosedBox) {
+  Scene scene = sceneWith({sky({1, 1, 1})});
+  const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                          {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  for (const auto& f : std::vector<std::array<int, 4>>{
+           {0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 5, 6, 2}})
+    addQuad(scene, {p[f[0]], p[f[1]], p[f[2]], p[f[3]]});
+  const SolveResult result = solveScene(scene, quickOptions(384));
+  for (int e = 0; e < result.solution.mesh->elementCount(); ++e)
+    EXPECT_TRUE(result.solution.radiosity[e].isZero()) << "element " << e;
+  EXPECT_GT(result.report.directLightRays, 0u);
+}
+
+// The first shot enters the solve as emission: a panel that no light reaches directly (it faces
+// down, below the sky's horizon) is lit by the floor the sky lights.
+TEST(DirectLight, InterreflectionCarriesTheFirstShotOn) {
+  Scene scene = floorScene({sky({1, 1, 1})});
+  addQuad(scene, {{1.5, 1, -0.5}, {2.5, 1, -0.5}, {2.5, 1, 0.5}, {1.5, 1, 0.5}});  // facing down
+  const SolveResult result = solveScene(scene, quickOptions());
+  const Solution& s = result.solution;
+  double panel = 0;
+  for (int e = 0; e < s.mesh->elementCount(); ++e)
+    if (s.mesh->normal(e).y() < 0) panel = std::max(panel, s.radiosity[e].r);
+  EXPECT_GT(panel, 0);
+  EXPECT_LT(panel, kRho.r * M_PI * kRho.r);  // at most ρ × the floor's B
+}
+
+// Adaptive refinement recomputes the first shot on the split elements.
+TEST(DirectLight, RefinedElementsGetTheirOwnDirectLight) {
+  const Light light = pointLight({0.1, 0.3, 0.05}, {1, 1, 1});
+  SolveOptions options = quickOptions(64);
+  options.formFactors = FormFactorMethod::Analytic;
+  options.shadowRays = 1;
+  options.refineThreshold = 0.05;
+  options.refinePasses = 2;
+  const SolveResult result = solveScene(floorScene({light}), options);
+  const Solution& s = result.solution;
+  ASSERT_GT(result.report.refinementPasses, 0);
+  ASSERT_GT(s.mesh->elementCount(), result.report.elementsBeforeRefinement);
+  for (int e = 0; e < s.mesh->elementCount(); ++e)
+    expectNear(s.radiosity[e], kRho * pointAverage(light, s.mesh->corners(e), s.mesh->normal(e)),
+               1e-12, e);
+}
+
+TEST(DirectLight, ASceneWithLightsAndNoEmissivePolygonIsAccepted) {
+  Scene scene = floorScene({});
+  EXPECT_THROW(requireEmitter(scene), InputError);
+  scene.lights.push_back(sky({1, 1, 1}));
+  EXPECT_NO_THROW(requireEmitter(scene));
+}
+
+}  // namespace
+}  // namespace rad
