@@ -25,11 +25,25 @@ struct Material {
   int illum = 2;
   SurfaceKind kind = SurfaceKind::Diffuse;
 
+  // Textures: indices into Scene::textures, -1 for none. A texture multiplies its factor
+  // (map_Kd × Kd, baseColorTexture × baseColorFactor; map_Ke × Ke, emissiveTexture × emissive).
+  int diffuseTexture = -1;
+  int emissionTexture = -1;
+  // Cut-outs: where the coverage (map_d, or the alpha of the diffuse texture when
+  // `alphaFromDiffuse`) is below alphaCutoff, rays pass through the surface as if it were absent.
+  int alphaTexture = -1;
+  bool alphaFromDiffuse = false;
+  double alphaCutoff = 0.5;
+  // Seen, lit and reflecting on both sides (each side its own radiosity); otherwise the back of
+  // the surface is black and receives nothing.
+  bool twoSided = false;
+
   // Where the material was defined, for error messages about its values.
   std::string sourceFile;
   int sourceLine = 0;
 
   bool isEmitter() const { return emission.maxComponent() > 0; }
+  bool hasCutouts() const { return alphaTexture >= 0 || alphaFromDiffuse; }
   bool isSpecular() const { return kind != SurfaceKind::Diffuse; }
 };
 

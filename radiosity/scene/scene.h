@@ -6,6 +6,7 @@
 
 #include "radiosity/scene/lights.h"
 #include "radiosity/scene/material.h"
+#include "radiosity/scene/texture.h"
 
 namespace rad {
 
@@ -15,8 +16,12 @@ struct ScenePolygon {
       vertices;        // indices into Scene::positions, counter-clockwise seen from the front
   int material = 0;    // index into Scene::materials
   int sourceLine = 0;  // line of the `f` statement in the OBJ file
-  // The `vt` of each corner (u, v with v up, as OBJ writes it), or empty when some corner has none.
+  // The `vt` of each corner (u, v with v up, as OBJ writes it), or empty when some corner has none:
+  // the texture coordinates (glTF's TEXCOORD_0, its v flipped to point up).
   std::vector<Eigen::Vector2d> uvs;
+  // Lightmap coordinates when the scene has a set of its own (glTF's TEXCOORD_1); when empty,
+  // `uvs` serve for --use-scene-uvs too.
+  std::vector<Eigen::Vector2d> lightmapUvs;
   std::string object;  // name of the OBJ `o`/`g` group the face belongs to ("" if none)
 };
 
@@ -27,7 +32,8 @@ struct Scene {
   std::vector<Eigen::Vector3d> positions;
   std::vector<ScenePolygon> polygons;
   std::vector<Material> materials;
-  std::vector<Light> lights;  // besides emissive polygons (a lights file, --sky, --sun)
+  std::vector<Texture> textures;  // referenced by Material::*Texture
+  std::vector<Light> lights;      // besides emissive polygons (a lights file, --sky, --sun)
 
   int skippedDegenerateFaces = 0;    // zero-area or repeated-vertex faces, skipped with a warning
   bool usedDefaultMaterial = false;  // some faces had no `usemtl`

@@ -1,0 +1,161 @@
+#include "radiosity/scene/texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <memory>
+
+#include "radiosity/core/errors.h"
+
+// stb's image decoder, compiled privately into this file only (libstb-dev's header).
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_NO_PSD
+#define STBI_NO_GIF
+#define STBI_NO_PIC
+#define STBI_NO_PNM
+#define STBI_FAILURE_USERMSG
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+#include <stb/stb_image.h>
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace rad {
+namespace {
+
+// Images above this many texels are refused: a corrupt header must not allocate gigabytes.
+constexpr long long kMaxTexels = 1LL << 28;
+
+int wrap(int i, int n) {
+  const int m = i % n;
+  return m < 0 ? m + n : m;
+}
+
+}  // namespace
+
+double srgbToLinear(double c) {
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+std::array<double, 4> Texture::texel(int x, int y) const {
+  const std::size_t i = (static_cast<std::size_t>(wrap(y, height)) * width + wrap(x, width)) * 4;
+  return {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
+}
+
+std::array<double, 4> Texture::bilinear(const Eigen::Vector2d& uv) const {
+  // Texel centres sit at half-integers; v up means row 0 (the top) is v = 1.
+  const double x = uv.x() * width - 0.5, y = (1.0 - uv.y()) * height - 0.5;
+  if (!std::isfinite(x) || !std::isfinite(y)) return texel(0, 0);
+  const double fx = std::floor(x), fy = std::floor(y);
+  // Reduce to one period first so huge coordinates keep their precision as ints.
+  const int x0 = static_cast<int>(std::fmod(fx, width)),
+            y0 = static_cast<int>(std::fmod(fy, height));
+  const double tx = x - fx, ty = y - fy;
+  const auto a = texel(x0, y0), b = texel(x0 + 1, y0), c = texel(x0, y0 + 1),
+             d = texel(x0 + 1, y0 + 1);
+  std::array<double, 4> out{};
+  for (int k = 0; k < 4; ++k)
+    out[k] = (1 - ty) * ((1 - tx) * a[k] + tx * b[k]) + ty * ((1 - tx) * c[k] + tx * d[k]);
+  return out;
+}
+
+Rgb Texture::colour(const Eigen::Vector2d& uv) const {
+  const auto t = bilinear(uv);
+  return {t[0], t[1], t[2]};
+}
+
+double Texture::alpha(const Eigen::Vector2d& uv) const { return bilinear(uv)[3]; }
+
+std::array<double, 4> Texture::average(const std::array<Eigen::Vector2d, 3>& uv) const {
+  // The image is taken as piecewise constant (each texel a little square), so the average is
+  // the texels' values weighted by the area of the triangle over each: nearest look-ups.
+  // The triangle's footprint in texels decides the sampling: split it into k² similar
+  // sub-triangles (k along each edge) and take each one's centroid, about sixteen per texel
+  // covered (1 to 4096 sub-triangles).
+  const Eigen::Vector2d e1 = uv[1] - uv[0], e2 = uv[2] - uv[0];
+  const double texels = 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x()) * width * height;
+  const int k = std::clamp(static_cast<int>(std::ceil(std::sqrt(16 * texels))), 1, 64);
+  std::array<double, 4> sum{};
+  int n = 0;
+  auto add = [&](double a, double b) {  // barycentric (a, b) of uv[1], uv[2] in the triangle
+    const Eigen::Vector2d p = uv[0] + a * e1 + b * e2;
+    const double x = std::floor(std::fmod(p.x(), 1.0) * width),
+                 y = std::floor((1.0 - std::fmod(p.y(), 1.0)) * height);
+    const auto t = texel(std::isfinite(x) ? static_cast<int>(x) : 0,
+                         std::isfinite(y) ? static_cast<int>(y) : 0);
+    for (int c = 0; c < 4; ++c) sum[c] += t[c];
+    ++n;
+  };
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; i + j < k; ++j) {
+      add((i + 1.0 / 3) / k, (j + 1.0 / 3) / k);                     // upright
+      if (i + j + 1 < k) add((i + 2.0 / 3) / k, (j + 2.0 / 3) / k);  // inverted
+    }
+  for (double& s : sum) s /= n;
+  return sum;
+}
+
+Rgb Texture::averageColour(const std::array<Eigen::Vector2d, 3>& uv) const {
+  const auto a = average(uv);
+  return {a[0], a[1], a[2]};
+}
+
+double Texture::averageAlpha(const std::array<Eigen::Vector2d, 3>& uv) const {
+  return average(uv)[3];
+}
+
+Texture decodeTexture(const unsigned char* bytes, std::size_t size, const std::string& source,
+                      TextureEncoding encoding) {
+  if (size == 0 || size > static_cast<std::size_t>(INT32_MAX))
+    throw InputError(source, 0, "not a readable image (" + std::to_string(size) + " bytes)");
+  const int length = static_cast<int>(size);
+  int w = 0, h = 0, channels = 0;
+  if (!stbi_info_from_memory(bytes, length, &w, &h, &channels))
+    throw InputError(
+        source, 0,
+        std::string("not a readable image (PNG, JPEG, TGA, BMP or HDR): ") + stbi_failure_reason());
+  if (w <= 0 || h <= 0 || static_cast<long long>(w) * h > kMaxTexels)
+    throw InputError(source, 0,
+                     "image of " + std::to_string(w) + "×" + std::to_string(h) + " texels refused");
+  Texture texture;
+  texture.source = source;
+  texture.width = w;
+  texture.height = h;
+  texture.rgba.resize(static_cast<std::size_t>(w) * h * 4);
+  const bool hdr = stbi_is_hdr_from_memory(bytes, length);
+  if (hdr) {
+    std::unique_ptr<float, void (*)(void*)> data(
+        stbi_loadf_from_memory(bytes, length, &w, &h, &channels, 4), stbi_image_free);
+    if (!data) throw InputError(source, 0, std::string("corrupt image: ") + stbi_failure_reason());
+    std::copy(data.get(), data.get() + texture.rgba.size(), texture.rgba.begin());
+  } else {
+    std::unique_ptr<unsigned char, void (*)(void*)> data(
+        stbi_load_from_memory(bytes, length, &w, &h, &channels, 4), stbi_image_free);
+    if (!data) throw InputError(source, 0, std::string("corrupt image: ") + stbi_failure_reason());
+    float table[256];
+    for (int i = 0; i < 256; ++i)
+      table[i] = static_cast<float>(encoding == TextureEncoding::Srgb ? srgbToLinear(i / 255.0)
+                                                                      : i / 255.0);
+    for (std::size_t i = 0; i < texture.rgba.size(); ++i)
+      texture.rgba[i] = (i % 4 == 3) ? data.get()[i] / 255.0f : table[data.get()[i]];
+  }
+  for (float& v : texture.rgba)
+    if (!std::isfinite(v) || v < 0) v = 0;  // HDR files can hold anything
+  return texture;
+}
+
+Texture loadTextureFile(const std::string& path, TextureEncoding encoding) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open the texture file");
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                         std::istreambuf_iterator<char>());
+  return decodeTexture(bytes.data(), bytes.size(), path, encoding);
+}
+
+}  // namespace rad
