@@ -19,10 +19,10 @@ struct ScenePolygon {
   // The `vt` of each corner (u, v with v up, as OBJ writes it), or empty when some corner has none:
   // the texture coordinates (glTF's TEXCOORD_0, its v flipped to point up).
   std::vector<Eigen::Vector2d> uvs;
+  std::string object;  // name of the OBJ `o`/`g` group the face belongs to ("" if none)
   // Lightmap coordinates when the scene has a set of its own (glTF's TEXCOORD_1); when empty,
   // `uvs` serve for --use-scene-uvs too.
   std::vector<Eigen::Vector2d> lightmapUvs;
-  std::string object;  // name of the OBJ `o`/`g` group the face belongs to ("" if none)
 };
 
 // A validated scene: every polygon has >= 3 distinct, in-range vertices and non-zero area,
