@@ -127,6 +127,48 @@ void checkJson(const nlohmann::json& j, const std::string& path) {
   }
 }
 
+// An unsigned integer member of `object` (or `fallback` when absent); anything else is an error.
+std::uint64_t unsignedMember(const nlohmann::json& object, const char* key, std::uint64_t fallback,
+                             const std::string& path, const std::string& pointer) {
+  if (!object.is_object() || !object.contains(key)) return fallback;
+  const nlohmann::json& v = object[key];
+  if (!v.is_number_unsigned()) fail(path, pointer + "/" + key, "must be an unsigned integer");
+  return v.get<std::uint64_t>();
+}
+
+// tinygltf hands an image stored in a buffer view to the image callback as a pointer and a
+// length it does not check against the buffer: they are checked here, against the buffer's
+// byteLength (which tinygltf does hold the data to).
+void checkImageViews(const nlohmann::json& j, const std::string& path) {
+  if (!j.contains("images") || !j["images"].is_array()) return;
+  const nlohmann::json& views = j.contains("bufferViews") ? j["bufferViews"] : nlohmann::json();
+  const nlohmann::json& buffers = j.contains("buffers") ? j["buffers"] : nlohmann::json();
+  for (std::size_t i = 0; i < j["images"].size(); ++i) {
+    const std::string pointer = "/images/" + std::to_string(i);
+    const nlohmann::json& image = j["images"][i];
+    if (!image.is_object() || !image.contains("bufferView")) continue;
+    const std::uint64_t view = unsignedMember(image, "bufferView", 0, path, pointer);
+    if (!views.is_array() || view >= views.size())
+      fail(path, pointer + "/bufferView",
+           "buffer view " + std::to_string(view) + " does not exist");
+    const std::string viewPointer = "/bufferViews/" + std::to_string(view);
+    const nlohmann::json& v = views[view];
+    const std::uint64_t buffer = unsignedMember(v, "buffer", UINT64_MAX, path, viewPointer);
+    if (!buffers.is_array() || buffer >= buffers.size())
+      fail(path, viewPointer + "/buffer", "the buffer does not exist");
+    const std::string bufferPointer = "/buffers/" + std::to_string(buffer);
+    const std::uint64_t size =
+        unsignedMember(buffers[buffer], "byteLength", 0, path, bufferPointer);
+    const std::uint64_t offset = unsignedMember(v, "byteOffset", 0, path, viewPointer);
+    const std::uint64_t length = unsignedMember(v, "byteLength", 0, path, viewPointer);
+    if (offset > size || length > size - offset || length > 0x7FFFFFFFu)
+      fail(path, viewPointer,
+           "bytes " + std::to_string(offset) + " + " + std::to_string(length) +
+               " run past the end of buffer " + std::to_string(buffer) + " (" +
+               std::to_string(size) + " bytes)");
+  }
+}
+
 // tinygltf hands each image's encoded bytes here; they are decoded later, once it is known
 // whether the image holds colour (sRGB) or data.
 bool keepEncodedBytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
@@ -145,6 +187,7 @@ tinygltf::Model parseModel(const std::string& path) {
     throw InputError(path, 0, std::string("not valid glTF JSON: ") + e.what());
   }
   checkJson(j, path);
+  checkImageViews(j, path);
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keepEncodedBytes, nullptr);
@@ -257,10 +300,6 @@ class MaterialReader {
       if (!(c >= 0 && c <= 1))
         fail(path_, pointer + "/pbrMetallicRoughness/baseColorFactor",
              "reflectance must be in [0, 1] in every channel");
-    if (base.maxComponent() == 1)
-      logWarning(path_ + ": " + pointer +
-                 ": base colour 1 keeps all the light a surface receives; a closed scene of such "
-                 "surfaces cannot converge (it stops at the iteration budget)");
 
     Rgb emissive = colour(m.emissiveFactor, pointer + "/emissiveFactor");
     double strength = 1;
@@ -269,6 +308,7 @@ class MaterialReader {
     if (!(std::isfinite(strength) && strength >= 0) || emissive.minComponent() < 0)
       fail(path_, pointer, "emission must be finite and non-negative");
     material.emission = emissive * strength;
+    if (!material.emission.isFinite()) fail(path_, pointer, "emissive colour × strength overflows");
     if (m.emissiveTexture.index >= 0)
       material.emissionTexture = texture(m.emissiveTexture.index, m.emissiveTexture.texCoord,
                                          pointer + "/emissiveTexture");
@@ -299,6 +339,10 @@ class MaterialReader {
       material.specular = base;
     } else {
       material.diffuse = base;
+      if (base.maxComponent() == 1)
+        logWarning(path_ + ": " + pointer +
+                   ": base colour 1 keeps all the light a surface receives; a closed scene of "
+                   "such surfaces cannot converge (it stops at the iteration budget)");
       if (pbr.baseColorTexture.index >= 0)
         material.diffuseTexture = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
                                           pointer + "/pbrMetallicRoughness/baseColorTexture");
@@ -420,6 +464,7 @@ void addPrimitive(const tinygltf::Model& model, int meshIndex, int primitiveInde
   const tinygltf::Primitive& p = model.meshes[meshIndex].primitives[primitiveIndex];
   const std::string pointer =
       "/meshes/" + std::to_string(meshIndex) + "/primitives/" + std::to_string(primitiveIndex);
+  if (p.mode < 0) fail(path, pointer + "/mode", "unknown primitive mode " + std::to_string(p.mode));
   if (p.mode < TINYGLTF_MODE_TRIANGLES) {
     ++counts.skippedPrimitives;
     return;
@@ -542,9 +587,10 @@ Light convertLight(const tinygltf::Model& model, int index, const Eigen::Matrix4
   return light;
 }
 
-int lightOf(const tinygltf::Node& node) {
+// The KHR_lights_punctual light a node carries, if any.
+std::optional<int> lightOf(const tinygltf::Node& node) {
   const tinygltf::Value* e = extension(node.extensions, "KHR_lights_punctual");
-  if (!e || !e->IsObject() || !e->Has("light") || !e->Get("light").IsInt()) return -1;
+  if (!e || !e->IsObject() || !e->Has("light") || !e->Get("light").IsInt()) return std::nullopt;
   return e->Get("light").GetNumberAsInt();
 }
 
@@ -574,8 +620,8 @@ Scene loadGltfScene(const std::string& path) {
         addPrimitive(model, node.mesh, static_cast<int>(p), placed.world, path, materialIds,
                      defaultId, scene, counts);
     }
-    const int light = lightOf(node);
-    if (light >= 0) scene.lights.push_back(convertLight(model, light, placed.world, path));
+    if (const std::optional<int> light = lightOf(node))
+      scene.lights.push_back(convertLight(model, *light, placed.world, path));
   }
   dropDegenerate(scene, counts);
   for (const ScenePolygon& polygon : scene.polygons)
@@ -599,6 +645,13 @@ Scene loadGltfScene(const std::string& path) {
           std::to_string(scene.emitterCount()) + " emitting triangles, " +
           std::to_string(scene.lights.size()) + " lights");
   return scene;
+}
+
+bool gltfSceneHasLights(const std::string& path) {
+  const tinygltf::Model model = parseModel(path);
+  for (const PlacedNode& placed : placeNodes(model, path))
+    if (lightOf(model.nodes[placed.node])) return true;
+  return false;
 }
 
 std::optional<Camera> loadGltfCamera(const std::string& path) {

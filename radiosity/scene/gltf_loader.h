@@ -24,6 +24,10 @@ constexpr double kLumensPerWatt = 683.0;
 // extensions, undecodable images).
 Scene loadGltfScene(const std::string& path);
 
+// Whether a node of the default scene carries a KHR_lights_punctual light (without reading the
+// geometry or decoding images): for the checks that run before a scene is loaded.
+bool gltfSceneHasLights(const std::string& path);
+
 // The camera of the default scene's first node that has a perspective camera (its world
 // position, -z view and +y up, yfov; the aspect ratio sets the width at the default height), or
 // nullopt when there is none. Throws as loadGltfScene for a file it cannot read.

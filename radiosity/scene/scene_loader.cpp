@@ -84,6 +84,11 @@ Scene loadScene(const std::string& path, const LightInput& lights) {
   return scene;
 }
 
+bool sceneHasOwnLights(const std::string& path) {
+  const std::string ext = extensionOf(path);
+  return (ext == ".gltf" || ext == ".glb") && gltfSceneHasLights(path);
+}
+
 std::string readableSceneFormats() {
   std::string list;
   for (const SceneFormat& f : kFormats)

@@ -22,6 +22,10 @@ Scene loadScene(const std::string& path);
 // solves or renders.
 Scene loadScene(const std::string& path, const LightInput& lights);
 
+// Whether the scene file carries lights of its own (glTF's KHR_lights_punctual), which
+// loadScene(path, lights) puts before the lights file's; false for formats without lights.
+bool sceneHasOwnLights(const std::string& path);
+
 // The formats loadScene reads, for messages and --help: "OBJ (.obj), binary glTF (.glb), ...".
 std::string readableSceneFormats();
 

@@ -11,8 +11,10 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/scene/gltf_loader.h"
+#include "radiosity/scene/lightmap_uv_check.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_loader.h"
+#include "radiosity/scene/scene_mesh.h"
 #include "tests/support/gltf_writer.h"
 
 namespace rad {
@@ -192,6 +194,27 @@ TEST(GltfLoader, TexcoordsFlipVToPointUpAndTheSecondSetIsTheLightmapSet) {
   expectRgb(scene.materials[0].emission, Rgb(1, 0.5, 0.25));
 }
 
+// bake --use-scene-uvs bakes into TEXCOORD_1 where the file has it: here TEXCOORD_0 tiles (it
+// leaves [0, 1], which a lightmap refuses) while TEXCOORD_1 is a valid layout.
+TEST(GltfLoader, SceneUvBakingPrefersTheLightmapSet) {
+  tinygltf::Model model = quadModel();
+  const std::vector<float> tiled = {0, 0, 2, 0, 2, 2, 0, 2};
+  model.meshes[0].primitives[0].attributes["TEXCOORD_0"] =
+      test::addAccessor(model, tiled, TINYGLTF_TYPE_VEC2, 2);
+  const Scene scene = loadScene(write(model, "lightmap_set.glb"));
+  EXPECT_NO_THROW(checkLightmapUvs(scene));
+  const PatchMesh mesh = buildPatchMesh(scene);
+  ASSERT_TRUE(mesh.hasUvs());
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    for (const Eigen::Vector2d& uv : mesh.cornerUvs(e)) {
+      EXPECT_LE(uv.x(), 0.5);  // TEXCOORD_1 spans [0, 0.5] × [0.75, 1] after the flip
+      EXPECT_GE(uv.y(), 0.75);
+    }
+  // Without TEXCOORD_1 the tiled set is what a bake would use, and it is refused.
+  model.meshes[0].primitives[0].attributes.erase("TEXCOORD_1");
+  EXPECT_THROW(checkLightmapUvs(loadScene(write(model, "tiled_only.glb"))), InputError);
+}
+
 TEST(GltfLoader, StripsAndFansBecomeTrianglesFacingTheSameWay) {
   for (int mode : {TINYGLTF_MODE_TRIANGLE_STRIP, TINYGLTF_MODE_TRIANGLE_FAN}) {
     tinygltf::Model model = quadModel();
@@ -213,6 +236,23 @@ TEST(GltfLoader, StripsAndFansBecomeTrianglesFacingTheSameWay) {
     }
     EXPECT_NEAR(area, 1, 1e-12) << mode;
   }
+}
+
+// data/tests/gltf/textured_quad.gltf: the quad with its buffer and a 2×2 RGBA PNG as data URIs
+// (texels, top row first: red opaque, green at alpha 128, blue, white at alpha 0), alphaMode MASK.
+TEST(GltfLoader, BaseColorTextureIsDecodedAsSrgbWithItsAlphaForCutouts) {
+  const Scene scene = loadScene(std::string(RADIOSITY_DATA_DIR) + "/tests/gltf/textured_quad.gltf");
+  ASSERT_EQ(scene.textures.size(), 1u);
+  const Material& m = scene.materials[0];
+  EXPECT_EQ(m.diffuseTexture, 0);
+  EXPECT_TRUE(m.alphaFromDiffuse);
+  EXPECT_DOUBLE_EQ(m.alphaCutoff, 0.5);
+  const Texture& t = scene.textures[0];
+  ASSERT_EQ(t.width, 2);
+  ASSERT_EQ(t.height, 2);
+  const std::vector<float> expected = {1, 0, 0, 1, 0, 1, 0, 128 / 255.f, 0, 0, 1, 1, 1, 1, 1, 0};
+  ASSERT_EQ(t.rgba.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(t.rgba[i], expected[i], 1e-6) << i;
 }
 
 TEST(GltfLoader, MaterialsMapToMirrorsDielectricsTwoSidedAndCutouts) {
@@ -384,6 +424,18 @@ TEST(GltfLoader, MissingAndCorruptImages) {
   model.images[0].uri = "corrupt.png";
   const std::string what = errorOf(write(model, "corrupt_image.gltf"));
   EXPECT_NE(what.find("corrupt.png"), std::string::npos) << what;
+  // An image in a buffer view that runs past its buffer (tinygltf would read beyond it).
+  model.images[0].uri.clear();
+  model.images[0].mimeType = "image/png";
+  const std::vector<unsigned char> bytes(16, 0);
+  model.images[0].bufferView = test::addBufferView(model, bytes.data(), bytes.size());
+  model.bufferViews.back().byteLength = 1u << 20;
+  expectError(write(model, "image_view_past_buffer.glb"),
+              "/bufferViews/" + std::to_string(model.images[0].bufferView) + ": bytes");
+  // Within its buffer but not an image: the decoder names the embedded image.
+  model.bufferViews.back().byteLength = bytes.size();
+  const std::string embedded = errorOf(write(model, "image_view_zeros.glb"));
+  EXPECT_NE(embedded.find("#/images/0"), std::string::npos) << embedded;
 }
 
 TEST(GltfLoader, NodeCyclesAndBadJsonAreInputErrors) {
