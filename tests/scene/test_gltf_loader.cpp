@@ -110,14 +110,17 @@ TEST(GltfLoader, CornellBoxUnderATransformedNodeIsTheObjSceneTriangulated) {
     const Scene gltf = loadScene(path);
     ASSERT_EQ(gltf.polygons.size(), reference.polygons.size()) << name;
     ASSERT_EQ(gltf.materials.size(), obj.materials.size()) << name;
+    ASSERT_EQ(gltf.positions.size(), reference.positions.size()) << name;
     // Positions went through float32 in local space: a few float ulps of the box's ~560 size.
     const double tolerance = 560 * 4 * 6e-8 * someTransform().norm();
     for (std::size_t i = 0; i < gltf.polygons.size(); ++i) {
       const ScenePolygon& g = gltf.polygons[i];
       const ScenePolygon& r = reference.polygons[i];
       ASSERT_EQ(g.material, r.material);
+      EXPECT_EQ(g.vertices, r.vertices) << "the same vertices, shared the same way";
       for (int k = 0; k < 3; ++k)
-        EXPECT_LT((gltf.positions[g.vertices[k]] - obj.positions[r.vertices[k]]).norm(), tolerance)
+        EXPECT_LT((gltf.positions[g.vertices[k]] - reference.positions[r.vertices[k]]).norm(),
+                  tolerance)
             << name << " triangle " << i;
       EXPECT_GT(normalOf(gltf, g).dot(normalOf(reference, r)), 0) << "winding of " << i;
     }

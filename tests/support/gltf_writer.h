@@ -16,20 +16,32 @@
 namespace rad::test {
 
 // The scene as fanned triangles, in the order the writer emits them (materials in order, then
-// polygons in order): the flattened reference a glTF reader must reproduce.
+// polygons in order), each material's triangles sharing vertices among themselves only (a glTF
+// primitive per material, as the writer makes): the flattened reference a glTF reader must
+// reproduce, connectivity included.
 inline Scene fanTriangulated(const Scene& scene) {
   Scene out = scene;
   out.polygons.clear();
-  for (int m = 0; m < static_cast<int>(scene.materials.size()); ++m)
+  out.positions.clear();
+  for (int m = 0; m < static_cast<int>(scene.materials.size()); ++m) {
+    std::vector<int> copy(scene.positions.size(), -1);  // scene vertex → this material's copy
+    auto vertex = [&](int v) {
+      if (copy[v] < 0) {
+        copy[v] = static_cast<int>(out.positions.size());
+        out.positions.push_back(scene.positions[v]);
+      }
+      return copy[v];
+    };
     for (const ScenePolygon& p : scene.polygons) {
       if (p.material != m) continue;
       for (std::size_t i = 1; i + 1 < p.vertices.size(); ++i) {
         ScenePolygon t;
         t.material = m;
-        t.vertices = {p.vertices[0], p.vertices[i], p.vertices[i + 1]};
+        t.vertices = {vertex(p.vertices[0]), vertex(p.vertices[i]), vertex(p.vertices[i + 1])};
         out.polygons.push_back(t);
       }
     }
+  }
   return out;
 }
 
@@ -93,17 +105,34 @@ inline tinygltf::Model gltfModel(const Scene& scene, const Eigen::Matrix4d& tran
     }
     model.materials.push_back(material);
 
-    std::vector<float> positions;
+    // This material's vertices are contiguous in `triangles` (fanTriangulated numbers them so).
+    int first = -1, last = -1;
+    std::vector<std::uint32_t> indices;
     for (const ScenePolygon& t : triangles.polygons) {
       if (t.material != m) continue;
       for (int v : t.vertices) {
-        const Eigen::Vector4d local = inverse * scene.positions[v].homogeneous();
-        for (int k = 0; k < 3; ++k) positions.push_back(static_cast<float>(local[k]));
+        first = first < 0 ? v : std::min(first, v);
+        last = std::max(last, v);
       }
     }
-    if (positions.empty()) continue;
+    if (first < 0) continue;
+    for (const ScenePolygon& t : triangles.polygons)
+      if (t.material == m)
+        for (int v : t.vertices) indices.push_back(static_cast<std::uint32_t>(v - first));
+    std::vector<float> positions;
+    for (int v = first; v <= last; ++v) {
+      const Eigen::Vector4d local = inverse * triangles.positions[v].homogeneous();
+      for (int k = 0; k < 3; ++k) positions.push_back(static_cast<float>(local[k]));
+    }
     tinygltf::Primitive primitive;
     primitive.attributes["POSITION"] = addAccessor(model, positions, TINYGLTF_TYPE_VEC3, 3);
+    tinygltf::Accessor index;
+    index.bufferView = addBufferView(model, indices.data(), indices.size() * 4);
+    index.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    index.count = indices.size();
+    index.type = TINYGLTF_TYPE_SCALAR;
+    model.accessors.push_back(index);
+    primitive.indices = static_cast<int>(model.accessors.size()) - 1;
     primitive.material = m;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     tinygltf::Mesh mesh;
