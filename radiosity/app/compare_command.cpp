@@ -75,16 +75,22 @@ void runCompare(const CLI::App& command, CompareOptions& o) {
                      solves ? "" : "none of the --methods solves radiosity");
   for (const RenderMethod* method : methods) requireLightsSampled(o.solve, *method, o.gather);
   std::string source = o.cameraFile;
+  std::optional<Camera> sceneCamera;  // a glTF scene's own camera, when there is no sidecar
   if (source.empty()) {
     source = cameraSidecarPath(o.solve.scenePath);
-    if (!std::filesystem::exists(source))
-      throw InputError(o.solve.scenePath, 0,
-                       "no camera: write " + source + " or pass --camera FILE");
+    if (!std::filesystem::exists(source)) {
+      sceneCamera = findSceneCamera(o.solve.scenePath);
+      if (!sceneCamera)
+        throw InputError(o.solve.scenePath, 0,
+                         "no camera: write " + source + " or pass --camera FILE");
+      source.clear();  // no camera file: nothing to read motion blur from
+    }
   }
-  Camera camera = loadCamera(source);
+  Camera camera = sceneCamera ? *sceneCamera : loadCamera(source);
   if (o.width) camera.width = *o.width;
   if (o.height) camera.height = *o.height;
-  validateCamera(camera, source + " (with command-line overrides)");
+  validateCamera(camera,
+                 (source.empty() ? o.solve.scenePath : source) + " (with command-line overrides)");
   RenderWorld world(o.solve, source);
 
   const int threads = o.solve.threads > 0 ? o.solve.threads : tbb::info::default_concurrency();
@@ -156,7 +162,7 @@ void runCompare(const CLI::App& command, CompareOptions& o) {
   for (const SkipNote& s : world.skipped()) skipped.push_back({{"what", s.what}, {"why", s.why}});
   const nlohmann::json report = {
       {"scene", o.solve.scenePath},
-      {"camera", source},
+      {"camera", source.empty() ? o.solve.scenePath : source},
       {"width", camera.width},
       {"height", camera.height},
       {"seed", o.solve.seed},

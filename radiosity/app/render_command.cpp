@@ -52,8 +52,8 @@ struct RenderCommandOptions {
 
 Eigen::Vector3d toVector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
-// The camera from --camera, the scene's sidecar or the command line; `source` gets the file it
-// came from ("" for none), which also holds the motion-blur fields.
+// The camera from --camera, the scene's sidecar, the scene's own (glTF) or the command line;
+// `source` gets the file it came from ("" for none), which also holds the motion-blur fields.
 Camera resolveCamera(const RenderCommandOptions& o, std::string& source) {
   Camera camera;
   source = o.cameraFile;
@@ -61,8 +61,12 @@ Camera resolveCamera(const RenderCommandOptions& o, std::string& source) {
     const std::string sidecar = cameraSidecarPath(o.solve.scenePath);
     if (std::filesystem::exists(sidecar)) source = sidecar;
   }
+  std::optional<Camera> sceneCamera;  // a glTF scene's own camera, when there is no sidecar
+  if (source.empty()) sceneCamera = findSceneCamera(o.solve.scenePath);
   if (!source.empty()) {
     camera = loadCamera(source);
+  } else if (sceneCamera) {
+    camera = *sceneCamera;
   } else if (o.position.empty() || o.lookAt.empty()) {
     throw InputError(o.solve.scenePath, 0,
                      "no camera: write " + cameraSidecarPath(o.solve.scenePath) +

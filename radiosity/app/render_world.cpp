@@ -19,7 +19,9 @@ double since(Clock::time_point t) {
 
 void requireLightsSampled(const SolveOptions& solve, const RenderMethod& method, int gather) {
   if (method.needsSolve && gather == 0) return;
-  if (findSceneLights(solve.scenePath, solve.lights, /*log=*/false).empty()) return;
+  if (findSceneLights(solve.scenePath, solve.lights, /*log=*/false).empty() &&
+      !sceneHasOwnLights(solve.scenePath))
+    return;
   const std::string what = method.needsSolve
                                ? "--method " + method.name + " --gather " + std::to_string(gather)
                                : "--method " + method.name;

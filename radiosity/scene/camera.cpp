@@ -1,11 +1,14 @@
 #include "radiosity/scene/camera.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "radiosity/core/errors.h"
+#include "radiosity/scene/gltf_loader.h"
 #include "radiosity/scene/json_file.h"
 
 namespace rad {
@@ -99,7 +102,14 @@ Camera loadCamera(const std::string& path) {
 std::optional<Camera> findSceneCamera(const std::string& scenePath) {
   const std::string path = cameraSidecarPath(scenePath);
   std::error_code error;
-  if (!std::filesystem::exists(path, error)) return std::nullopt;
+  if (!std::filesystem::exists(path, error)) {
+    // A glTF scene may carry its own camera; the sidecar, when there is one, overrides it.
+    std::string ext = std::filesystem::path(scenePath).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".gltf" || ext == ".glb") return loadGltfCamera(scenePath);
+    return std::nullopt;
+  }
   return loadCamera(path);
 }
 

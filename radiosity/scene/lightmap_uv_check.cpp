@@ -8,6 +8,7 @@
 #include "meshing/lightmap_charts.h"
 #include "meshing/polygon_triangulation.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/scene/scene_mesh.h"
 
 namespace rad {
 namespace {
@@ -42,7 +43,7 @@ std::vector<UvTriangle> uvTriangles(const Scene& scene) {
   const std::string& file = scene.sourcePath;
   int missing = 0, firstMissing = -1;
   for (size_t p = 0; p < scene.polygons.size(); ++p)
-    if (scene.polygons[p].uvs.empty() && missing++ == 0) firstMissing = static_cast<int>(p);
+    if (bakeUvs(scene.polygons[p]).empty() && missing++ == 0) firstMissing = static_cast<int>(p);
   if (missing == static_cast<int>(scene.polygons.size()))
     throw InputError(file, 0,
                      std::string(kOption) +
@@ -57,7 +58,7 @@ std::vector<UvTriangle> uvTriangles(const Scene& scene) {
   std::vector<UvTriangle> triangles;
   for (size_t p = 0; p < scene.polygons.size(); ++p) {
     const ScenePolygon& polygon = scene.polygons[p];
-    for (const Eigen::Vector2d& uv : polygon.uvs)
+    for (const Eigen::Vector2d& uv : bakeUvs(polygon))
       if (!(uv.x() >= 0 && uv.x() <= 1 && uv.y() >= 0 && uv.y() <= 1))
         throw InputError(file, polygon.sourceLine,
                          std::string(kOption) + "texture coordinate " + uvText(uv) +
@@ -65,7 +66,8 @@ std::vector<UvTriangle> uvTriangles(const Scene& scene) {
     std::vector<Eigen::Vector3d> points;
     for (int v : polygon.vertices) points.push_back(scene.positions[v]);
     for (const auto& t : triangulatePolygon(points)) {
-      const Tri2 uv{polygon.uvs[t[0]], polygon.uvs[t[1]], polygon.uvs[t[2]]};
+      const std::vector<Eigen::Vector2d>& uvs = bakeUvs(polygon);
+      const Tri2 uv{uvs[t[0]], uvs[t[1]], uvs[t[2]]};
       if (std::abs(signedArea(uv)) <= kMinUvArea)
         throw InputError(file, polygon.sourceLine,
                          std::string(kOption) + "face has zero area in texture space (corners " +

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "radiosity/core/errors.h"
+#include "radiosity/scene/gltf_loader.h"
 #include "radiosity/scene/obj_loader.h"
 
 namespace rad {
@@ -14,7 +15,7 @@ namespace {
 enum class Content { Text, BinaryGltf, Json, Ply };
 
 // One format: how to recognise it and how to load it. A format radiosity recognises but does
-// not read has no loader; adding glTF means giving its entries a loader.
+// not read (PLY) has no loader.
 struct SceneFormat {
   const char* name;       // for messages: "binary glTF"
   const char* extension;  // lower case, with the dot
@@ -24,8 +25,8 @@ struct SceneFormat {
 
 const SceneFormat kFormats[] = {
     {"OBJ", ".obj", Content::Text, &loadObjScene},
-    {"binary glTF", ".glb", Content::BinaryGltf, nullptr},
-    {"glTF", ".gltf", Content::Json, nullptr},
+    {"binary glTF", ".glb", Content::BinaryGltf, &loadGltfScene},
+    {"glTF", ".gltf", Content::Json, &loadGltfScene},
     {"PLY", ".ply", Content::Ply, nullptr},
 };
 
@@ -78,8 +79,14 @@ std::string extensionOf(const std::string& path) {
 
 Scene loadScene(const std::string& path, const LightInput& lights) {
   Scene scene = loadScene(path);
-  scene.lights = findSceneLights(path, lights);
+  // The scene's own lights (glTF's KHR_lights_punctual) come first, then the lights file's.
+  for (Light& light : findSceneLights(path, lights)) scene.lights.push_back(std::move(light));
   return scene;
+}
+
+bool sceneHasOwnLights(const std::string& path) {
+  const std::string ext = extensionOf(path);
+  return (ext == ".gltf" || ext == ".glb") && gltfSceneHasLights(path);
 }
 
 std::string readableSceneFormats() {

@@ -6,7 +6,8 @@
 
 namespace rad {
 
-// Loads a scene file of any format radiosity reads (today OBJ + MTL, through loadObjScene). The
+// Loads a scene file of any format radiosity reads (OBJ + MTL through loadObjScene, glTF 2.0 .gltf
+// and .glb through loadGltfScene). The
 // format is recognised by the file's extension AND its first bytes: binary glTF (magic "glTF"),
 // a JSON object (glTF 2.0 when the extension is .gltf), PLY ("ply"), else OBJ by the extension
 // .obj. Throws InputError naming the file:
@@ -21,7 +22,11 @@ Scene loadScene(const std::string& path);
 // solves or renders.
 Scene loadScene(const std::string& path, const LightInput& lights);
 
-// The formats loadScene reads, for messages and --help: "OBJ (.obj)".
+// Whether the scene file carries lights of its own (glTF's KHR_lights_punctual), which
+// loadScene(path, lights) puts before the lights file's; false for formats without lights.
+bool sceneHasOwnLights(const std::string& path);
+
+// The formats loadScene reads, for messages and --help: "OBJ (.obj), binary glTF (.glb), ...".
 std::string readableSceneFormats();
 
 }  // namespace rad

@@ -62,10 +62,29 @@ INSTANTIATE_TEST_SUITE_P(
 
 const std::string kCornell = std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box.obj";
 
-// A scene in a format radiosity does not read (here a binary glTF, as `radiosity bake` writes):
-// named as such, exit 1, no output directory.
+// A scene in a format radiosity does not read (here PLY): named as such, exit 1, no output
+// directory.
 TEST(BadInput, UnsupportedSceneFormatIsNamedAndWritesNothing) {
   const auto dir = testing::scratchPath("unsupported_format");
+  std::filesystem::create_directories(dir);
+  const auto ply = dir / "x.ply";
+  std::ofstream(ply, std::ios::binary) << "ply\nformat binary_little_endian 1.0\nend_header\n";
+  const auto out = dir / "o";
+  const auto result = testing::runRadiosity("solve " + ply.string() + " --out " + out.string());
+  EXPECT_EQ(result.exitCode, 1) << result.stderrText;
+  EXPECT_NE(result.stderrText.find(ply.string() + ": unsupported scene format (PLY)"),
+            std::string::npos)
+      << result.stderrText;
+  EXPECT_NE(result.stderrText.find("radiosity reads OBJ (.obj)"), std::string::npos)
+      << result.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(out)) << "a failed run created " << out;
+  std::filesystem::remove_all(dir);
+}
+
+// A binary glTF cut short after its header: the glTF reader names the file, exit 1, nothing
+// written.
+TEST(BadInput, TruncatedGlbIsAnInputErrorAndWritesNothing) {
+  const auto dir = testing::scratchPath("truncated_glb");
   std::filesystem::create_directories(dir);
   const auto glb = dir / "x.glb";
   std::ofstream(glb, std::ios::binary)
@@ -73,10 +92,8 @@ TEST(BadInput, UnsupportedSceneFormatIsNamedAndWritesNothing) {
   const auto out = dir / "o";
   const auto result = testing::runRadiosity("solve " + glb.string() + " --out " + out.string());
   EXPECT_EQ(result.exitCode, 1) << result.stderrText;
-  EXPECT_NE(result.stderrText.find(glb.string() + ": unsupported scene format (binary glTF)"),
+  EXPECT_NE(result.stderrText.find(glb.string() + ": binary glTF: the first chunk is not a JSON"),
             std::string::npos)
-      << result.stderrText;
-  EXPECT_NE(result.stderrText.find("radiosity reads OBJ (.obj)"), std::string::npos)
       << result.stderrText;
   EXPECT_FALSE(std::filesystem::exists(out)) << "a failed run created " << out;
   std::filesystem::remove_all(dir);

@@ -1,6 +1,7 @@
-// loadScene: the scene format by extension and content; only OBJ is read today.
+// loadScene: the scene format by extension and content; OBJ and glTF are read, PLY is not.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -37,18 +38,23 @@ const std::string kGlb = std::string("glTF\x02\x00\x00\x00\x40\x00\x00\x00", 12)
                          "{\"asset\":{\"version\":\"2.0\"}}";
 const std::string kPly = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nend_header\n";
 
-TEST(SceneLoader, BinaryGltfIsUnsupportedNamingTheFileAndTheFormatsRead) {
-  const fs::path glb = scratch("scene_baked.glb", kGlb);
-  const std::string what = errorOf(glb);
-  EXPECT_EQ(what.rfind(glb.string() + ": unsupported scene format (binary glTF)", 0), 0u) << what;
-  EXPECT_NE(what.find("radiosity reads OBJ (.obj)"), std::string::npos) << what;
-}
-
-TEST(SceneLoader, GltfJsonIsUnsupported) {
-  const std::string what =
-      errorOf(scratch("scene.gltf", "{\n  \"asset\": {\"version\": \"2.0\"}}"));
-  EXPECT_NE(what.find("unsupported scene format (glTF)"), std::string::npos) << what;
-  EXPECT_NE(what.find("radiosity reads OBJ (.obj)"), std::string::npos) << what;
+TEST(SceneLoader, BinaryGltfAndGltfJsonAreReadByTheGltfLoader) {
+  // A complete .glb: header, then a JSON chunk padded with spaces to a multiple of 4 bytes.
+  std::string json = "{\"asset\":{\"version\":\"2.0\"}}";
+  while (json.size() % 4) json += ' ';
+  std::string glb = "glTF";
+  for (std::uint32_t word : {2u, static_cast<std::uint32_t>(20 + json.size()),
+                             static_cast<std::uint32_t>(json.size()), 0x4E4F534Au})
+    for (int i = 0; i < 4; ++i) glb += static_cast<char>((word >> (8 * i)) & 0xFF);
+  glb += json;
+  EXPECT_EQ(errorOf(scratch("empty.glb", glb)), "");
+  EXPECT_EQ(errorOf(scratch("empty.gltf", json)), "");
+  // The loader's own errors come through, naming the file.
+  const fs::path bad =
+      scratch("bad_version.glb", kGlb.substr(0, 4) + std::string("\x01\0\0\0", 4) + kGlb.substr(8));
+  EXPECT_NE(errorOf(bad).find("bad_version.glb: binary glTF version 1"), std::string::npos)
+      << errorOf(bad);
+  EXPECT_NE(readableSceneFormats().find("binary glTF (.glb), glTF (.gltf)"), std::string::npos);
 }
 
 TEST(SceneLoader, PlyIsUnsupported) {
