@@ -3,7 +3,8 @@
 #   bash scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
 # Targets: obj_scene (OBJ + MTL through loadObjScene, the scene limits and meshing),
 # camera_json (the camera sidecar through loadCamera and findSceneCamera), lights_json (the lights
-# file through loadLights and findSceneLights) and, where VTK is installed, solution_vtp
+# file through loadLights and findSceneLights), texture_image (image bytes through decodeTexture,
+# as MTL and glTF textures reach it) and, where VTK is installed, solution_vtp
 # (a saved solution.vtp through the viewer's reader and what the viewer computes from it).
 # Default: 60 s each, every target the build has, one after the other. Each run starts from the
 # seed corpus in tests/fuzz/corpus/<target> and keeps what it finds in $BUILD/corpus/<target>

@@ -3,14 +3,11 @@
 namespace rad {
 
 PatchMesh buildPatchMesh(const Scene& scene) {
-  // The mesh carries UVs only when every polygon has them (the lightmap's use of scene UVs
-  // requires that, and reports the faces without).
-  const bool uvs =
-      !scene.polygons.empty() && scene.polygonsWithUvs() == static_cast<int>(scene.polygons.size());
+  // Every polygon's texture coordinates go to its elements, for texture look-ups; a lightmap in
+  // the scene's UVs needs them on every element (PatchMesh::hasUvs) and reports the faces without.
   std::vector<PatchPolygon> polygons;
   polygons.reserve(scene.polygons.size());
-  for (const ScenePolygon& p : scene.polygons)
-    polygons.push_back({p.vertices, p.material, uvs ? p.uvs : std::vector<Eigen::Vector2d>{}});
+  for (const ScenePolygon& p : scene.polygons) polygons.push_back({p.vertices, p.material, p.uvs});
   return PatchMesh(scene.positions, polygons);
 }
 
