@@ -29,11 +29,12 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
   for (const PatchPolygon& polygon : polygons) {
     RAD_CHECK_MSG(polygon.uvs.empty() || polygon.uvs.size() == polygon.vertices.size(),
                   "PatchMesh: a polygon needs one UV per corner");
-    RAD_CHECK_MSG(polygon.uvs.empty() == polygons.front().uvs.empty(),
-                  "PatchMesh: some polygons have UVs and others not");
   }
-  hasUvs_ = !polygons.empty() && !polygons.front().uvs.empty();
-  if (hasUvs_) mesh_.add_property(uvs_, "uv");
+  const auto withUvs = std::count_if(polygons.begin(), polygons.end(),
+                                     [](const PatchPolygon& p) { return !p.uvs.empty(); });
+  anyUvs_ = withUvs > 0;
+  allUvs_ = anyUvs_ && withUvs == static_cast<long>(polygons.size());
+  if (anyUvs_) mesh_.add_property(uvs_, "uv");
 
   std::vector<TriMesh::VertexHandle> handles(positions.size());
   for (size_t i = 0; i < positions.size(); ++i) handles[i] = mesh_.add_vertex(toOm(positions[i]));
@@ -55,14 +56,15 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
       boundsMax_ = boundsMax_.cwiseMax(positions[v]);
     }
     const int patch = patchCount_++;
+    const bool hasUvs = !polygon.uvs.empty();
     for (const auto& t : triangulatePolygon(points)) {
       const std::array<Eigen::Vector2d, 3> uvs =
-          hasUvs_ ? std::array<Eigen::Vector2d, 3>{polygon.uvs[t[0]], polygon.uvs[t[1]],
-                                                   polygon.uvs[t[2]]}
-                  : std::array<Eigen::Vector2d, 3>{};
+          hasUvs ? std::array<Eigen::Vector2d, 3>{polygon.uvs[t[0]], polygon.uvs[t[1]],
+                                                  polygon.uvs[t[2]]}
+                 : std::array<Eigen::Vector2d, 3>{};
       addTriangle(handles[polygon.vertices[t[0]]], handles[polygon.vertices[t[1]]],
                   handles[polygon.vertices[t[2]]], patch, polygon.material,
-                  hasUvs_ ? uvs.data() : nullptr);
+                  hasUvs ? uvs.data() : nullptr);
     }
   }
   inputTriangles_ = elementCount();
@@ -85,6 +87,9 @@ void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
     FaceUvs& face = mesh_.property(uvs_, f);
     face.vertex = {a.idx(), b.idx(), c.idx()};
     for (int k = 0; k < 3; ++k) face.uv[2 * k] = uvs[k].x(), face.uv[2 * k + 1] = uvs[k].y();
+    face.valid = true;
+  } else if (anyUvs_) {
+    mesh_.property(uvs_, f).valid = false;
   }
   mesh_.property(patchId_, f) = patch;
   mesh_.property(materialId_, f) = material;
@@ -113,7 +118,7 @@ std::array<Eigen::Vector3d, 3> PatchMesh::corners(int element) const {
 }
 
 std::array<Eigen::Vector2d, 3> PatchMesh::cornerUvs(int element) const {
-  RAD_CHECK_MSG(hasUvs_, "PatchMesh::cornerUvs: the mesh has no UVs");
+  RAD_CHECK_MSG(hasUvs(element), "PatchMesh::cornerUvs: the element has no UVs");
   const FaceUvs& face = mesh_.property(uvs_, this->face(element));
   const std::array<int, 3> v = cornerVertices(element);
   std::array<Eigen::Vector2d, 3> uv;
@@ -192,7 +197,7 @@ void PatchMesh::splitEdge(TriMesh::EdgeHandle e) {
   for (auto f : mesh_.vf_range(mid)) {
     mesh_.property(level_, f) += 1;
     updateArea(f);
-    if (hasUvs_) splitUvs(f, from, to, mid.idx());
+    if (hasUvs(f.idx())) splitUvs(f, from, to, mid.idx());
   }
 }
 
@@ -207,6 +212,7 @@ void PatchMesh::splitUvs(TriMesh::FaceHandle f, int from, int to, int mid) {
     return parent.uv[2 * j + axis];
   };
   FaceUvs child;
+  child.valid = true;
   int k = 0;
   for (auto vh : mesh_.fv_range(f)) {
     child.vertex[k] = vh.idx();

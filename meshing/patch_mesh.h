@@ -23,8 +23,8 @@ struct PatchPolygon {
 
   std::vector<int> vertices;  // indices into the positions array, counter-clockwise from the front
   int material = 0;
-  // Texture coordinates per corner (the scene's own UVs), or empty. Either every polygon has
-  // them or none does.
+  // Texture coordinates per corner (the scene's own UVs), or empty: polygons with and without
+  // them may be mixed.
   std::vector<Eigen::Vector2d> uvs;
 };
 
@@ -51,11 +51,13 @@ class PatchMesh {
   std::array<int, 3> cornerVertices(int element) const;
   std::array<Eigen::Vector3d, 3> corners(int element) const;
   Eigen::Vector3d position(int vertex) const;
-  // Whether the elements carry the input polygons' texture coordinates.
-  bool hasUvs() const { return hasUvs_; }
+  // Whether every element carries its input polygon's texture coordinates.
+  bool hasUvs() const { return allUvs_; }
+  // Whether this element does (its polygon had them).
+  bool hasUvs(int element) const { return anyUvs_ && mesh_.property(uvs_, face(element)).valid; }
   // The texture coordinates at the element's corners (cornerVertices order), linear over its
   // polygon's triangles: a vertex made by bisection takes the mean of its edge's two ends.
-  // Requires hasUvs().
+  // Requires hasUvs(element).
   std::array<Eigen::Vector2d, 3> cornerUvs(int element) const;
   // How many times the element's ancestry was bisected (0 for the patch's own triangles).
   int level(int element) const { return mesh_.property(level_, face(element)); }
@@ -97,6 +99,7 @@ class PatchMesh {
   struct FaceUvs {
     std::array<int, 3> vertex{};
     std::array<double, 6> uv{};  // (u, v) per entry of `vertex`
+    bool valid = false;          // false: the face's polygon had no texture coordinates
   };
   void addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b, TriMesh::VertexHandle c,
                    int patch, int material, const Eigen::Vector2d* uvs);
@@ -111,8 +114,8 @@ class PatchMesh {
   std::vector<std::array<Eigen::Vector3d, 3>> shooterCorners_;
   bool shootersMarked_ = false;
   OpenMesh::FPropHandleT<double> area_;
-  OpenMesh::FPropHandleT<FaceUvs> uvs_;  // only when hasUvs_
-  bool hasUvs_ = false;
+  OpenMesh::FPropHandleT<FaceUvs> uvs_;  // only when anyUvs_
+  bool anyUvs_ = false, allUvs_ = false;
   int patchCount_ = 0;
   int inputTriangles_ = 0;
   Eigen::Vector3d boundsMin_, boundsMax_;

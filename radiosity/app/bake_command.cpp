@@ -2,6 +2,7 @@
 // that game engines and DCC tools load (glTF binary, OBJ + MTL, PLY vertex colours).
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -21,6 +22,7 @@
 #include "radiosity/output/image_io.h"
 #include "radiosity/output/lightmap_bake.h"
 #include "radiosity/output/lightmap_baked_mesh.h"
+#include "radiosity/output/lightmap_content.h"
 #include "radiosity/output/obj_export.h"
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/pipeline/mesh_stage.h"
@@ -30,6 +32,7 @@
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/lightmap_uv_check.h"
 #include "radiosity/scene/scene_loader.h"
+#include "radiosity/scene/surface_textures.h"
 #include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
@@ -48,6 +51,7 @@ struct BakeOptions {
   int gather = 0;                  // per-texel final gather rays; 0: interpolate the solution
   std::string solutionDir;         // --solution: reuse the solution `solve` saved there
   std::optional<double> exposure;  // --exposure: fixed instead of automatic
+  LightmapContent content = LightmapContent::Radiance;  // --lightmap-content
 };
 
 double since(std::chrono::steady_clock::time_point t) {
@@ -133,6 +137,18 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     if (!earlyLayout) layout = layoutLightmap(mesh, o);
     chartSeconds += since(t);
     t = std::chrono::steady_clock::now();
+    // Per element: the reflectance and emission it was solved with (textures' averages), from
+    // which a texel's own texture colour, or the albedo-free light, follows.
+    const std::vector<Rgb>& elementRho = solution.problem.reflectance;
+    std::vector<Rgb> elementLe(mesh.elementCount());
+    for (int e = 0; e < mesh.elementCount(); ++e)
+      elementLe[e] = elementEmission(solution.scene, mesh, e);
+    auto texelRho = [&](int e, const Eigen::Vector3d& b) {
+      return reflectanceAt(solution.scene, mesh, e, b[1], b[2]);
+    };
+    // H/π at the vertices: the light arriving, smooth across elements of different reflectance.
+    std::vector<Rgb> vertexIncident;
+    const bool irradiance = o.content == LightmapContent::Irradiance;
     if (o.gather > 0) {
       // Per-texel final gather: direct light by shadow rays to the emitters and gathered light
       // from the solution at every texel, for shadows sharper than the elements.
@@ -142,11 +158,31 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       const uint64_t seed = o.solve.seed;
       lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation,
                               [&](int e, const Eigen::Vector3d& b, size_t texel) {
-                                const auto c = mesh.corners(e);
                                 Rng rng(streamKey(seed, 0x6c6d6170ull, texel));  // per texel
                                 RayCounts counts;
-                                return gather.outgoingRadiance(
-                                    e, b[0] * c[0] + b[1] * c[1] + b[2] * c[2], rng, counts);
+                                const Rgb out = gather.outgoingRadiance(e, b, rng, counts);
+                                // Gathered at the texel with its own ρ: divide that one out.
+                                const Rgb& le = solution.scene.materials[mesh.material(e)].emission;
+                                return irradiance ? incidentLight(out, le, texelRho(e, b)) : out;
+                              });
+    } else if (irradiance || !solution.scene.textures.empty()) {
+      // The interpolated solution, with the texture's detail inside each element (or without the
+      // albedo at all).
+      std::vector<Rgb> incident(mesh.elementCount());
+      for (int e = 0; e < mesh.elementCount(); ++e)
+        incident[e] = incidentLight(solution.radiosity[e], M_PI * elementLe[e], elementRho[e]);
+      vertexIncident = interpolateVertexRadiance(interpolation, incident);
+      lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation,
+                              [&](int e, const Eigen::Vector3d& b, size_t) {
+                                const auto& v = interpolation.triangle(e);
+                                auto at = [&](const std::vector<Rgb>& perVertex) {
+                                  return perVertex[v[0]] * b[0] + perVertex[v[1]] * b[1] +
+                                         perVertex[v[2]] * b[2];
+                                };
+                                if (irradiance) return at(vertexIncident);
+                                if (!hasReflectanceTexture(solution.scene, mesh, e))
+                                  return at(vertexRadiance);
+                                return elementLe[e] + texelRho(e, b) * at(vertexIncident);
                               });
     } else {
       lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation);
@@ -176,7 +212,8 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                            {"chart_seconds", chartSeconds},
                            {"gather_rays", o.gather},
                            {"bake_seconds", since(t)},
-                           {"unit", "outgoing radiance, W m^-2 sr^-1"}};
+                           {"content", lightmapContentName(o.content)},
+                           {"unit", lightmapContentMeaning(o.content)}};
   } else {
     summary["skipped"] = {
         {{"what", "lightmap, scene_baked.obj"}, {"why", "--no-lightmap: vertex colours only"}}};
@@ -197,7 +234,8 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   };
   writeVertexColorsPly(open("vertex_colors.ply", true), interpolation, mesh, vertexRadiance,
                        toneMap);
-  writeBakedGlb(open("scene_baked.glb", true), baked, o.noLightmap ? nullptr : &png, toneMap);
+  writeBakedGlb(open("scene_baked.glb", true), baked, o.noLightmap ? nullptr : &png, toneMap,
+                o.content);
   if (!o.noLightmap) {
     open("lightmap.png", true)
         .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
@@ -261,6 +299,15 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
                    "Exposure of the 8-bit outputs (lightmap.png, vertex colours, the glTF): "
                    "display = clamp(exposure × radiance); default: the 99th percentile of the lit "
                    "surfaces' radiance maps to 1 (emitters excluded)");
+  bake->add_option("--lightmap-content", o->content,
+                   "What the lightmap holds: 'radiance' (outgoing, textures included: display as "
+                   "is) or 'irradiance' (incident light / pi without the surface's albedo, for "
+                   "engines that multiply it by the base colour; 0 where the reflectance is 0)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, LightmapContent>{{"radiance", LightmapContent::Radiance},
+                                                 {"irradiance", LightmapContent::Irradiance}},
+          CLI::ignore_case))
+      ->default_str("radiance");
   bake->add_option("--solution", o->solutionDir,
                    "Reuse the solution `radiosity solve` wrote into this directory (same scene and "
                    "solve options) instead of solving");

@@ -69,7 +69,8 @@ class GlbBuilder {
 }  // namespace
 
 void writeBakedGlb(std::ostream& out, const BakedMesh& mesh,
-                   const std::vector<std::uint8_t>* lightmapPng, const ToneMap& toneMap) {
+                   const std::vector<std::uint8_t>* lightmapPng, const ToneMap& toneMap,
+                   LightmapContent content) {
   const bool lightmap = lightmapPng != nullptr;
   if (lightmap) RAD_CHECK_EQ(mesh.uvs.size(), mesh.positions.size());  // one UV per vertex
   GlbBuilder b;
@@ -81,6 +82,10 @@ void writeBakedGlb(std::ostream& out, const BakedMesh& mesh,
   info["exposure"] = tinygltf::Value(toneMap.exposure);
   info["COLOR_0"] = tinygltf::Value(std::string("clamp(exposure * radiance, 0, 1), linear"));
   info["_RADIANCE"] = tinygltf::Value(std::string("linear outgoing radiance"));
+  if (lightmap) {
+    info["lightmap_content"] = tinygltf::Value(lightmapContentName(content));
+    info["lightmap"] = tinygltf::Value(lightmapContentMeaning(content));
+  }
   tinygltf::Value::Object extras;
   extras["radiosity"] = tinygltf::Value(info);
   model.asset.extras = tinygltf::Value(extras);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "radiosity/output/lightmap_baked_mesh.h"
+#include "radiosity/output/lightmap_content.h"
 #include "radiosity/output/tone_map.h"
 
 namespace rad {
@@ -18,9 +19,11 @@ namespace rad {
 // a black, rough, non-metallic base: core glTF that Blender, three.js, Babylon and game engines
 // show as the baked colours whatever lights a viewer adds, and COLOR_0, multiplying a black base,
 // adds nothing. Without a lightmap the materials are KHR_materials_unlit with a white base, so
-// COLOR_0 is what shows. The exposure is in asset.extras.radiosity. Open `out` in binary mode.
-// Throws RuntimeFailure if tinygltf fails to serialise.
+// COLOR_0 is what shows. The exposure and what the lightmap holds (`content`) are in
+// asset.extras.radiosity. Open `out` in binary mode. Throws RuntimeFailure if tinygltf fails to
+// serialise.
 void writeBakedGlb(std::ostream& out, const BakedMesh& mesh,
-                   const std::vector<std::uint8_t>* lightmapPng, const ToneMap& toneMap);
+                   const std::vector<std::uint8_t>* lightmapPng, const ToneMap& toneMap,
+                   LightmapContent content = LightmapContent::Radiance);
 
 }  // namespace rad

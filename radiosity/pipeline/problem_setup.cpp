@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "radiosity/scene/surface_textures.h"
+
 namespace rad {
 
 RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
@@ -13,9 +15,11 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
   problem.area.resize(n);
   for (int e = 0; e < n; ++e) {
     const Material& m = scene.materials[mesh.material(e)];
-    problem.emission[e] = M_PI * m.emission;  // Lambertian emitter: exitance = pi × radiance
+    // Lambertian emitter: exitance = pi × radiance. Textures enter as their area average over
+    // the element, so the element reflects and emits what its surface does in total.
+    problem.emission[e] = M_PI * elementEmission(scene, mesh, e);
     // Mirrors and glass hold no radiosity: rays pass on through them (extended form factors).
-    problem.reflectance[e] = m.isSpecular() ? Rgb() : m.diffuse;
+    problem.reflectance[e] = m.isSpecular() ? Rgb() : elementReflectance(scene, mesh, e);
     problem.area[e] = mesh.area(e);
   }
   return problem;

@@ -10,7 +10,7 @@
 namespace rad {
 
 // The per-element problem of a meshed scene: E = pi·Ke on emitters, rho = Kd (0 on mirrors
-// and glass, which hold no radiosity).
+// and glass, which hold no radiosity), each times its texture's area average over the element.
 RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh);
 
 // Mirror and glass behaviour per element for extended form factors.

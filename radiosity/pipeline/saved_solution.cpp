@@ -66,6 +66,11 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
     f.add(poly.material);
     f.add(poly.vertices.size());
     for (int v : poly.vertices) f.add(v);
+    f.add(poly.uvs.size());  // texture coordinates decide the textured reflectance
+    for (const Eigen::Vector2d& uv : poly.uvs) {
+      f.add(uv.x());
+      f.add(uv.y());
+    }
   }
   f.add(scene.materials.size());
   for (const Material& m : scene.materials) {
@@ -76,6 +81,14 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
     f.add(m.transmittance);
     f.add(m.ior);
     f.add(static_cast<int>(m.kind));
+    f.add(m.diffuseTexture);
+    f.add(m.emissionTexture);
+  }
+  f.add(scene.textures.size());
+  for (const Texture& t : scene.textures) {
+    f.add(t.width);
+    f.add(t.height);
+    for (float v : t.rgba) f.add(v);
   }
   f.add(scene.lights.size());
   for (const Light& l : scene.lights) {

@@ -84,7 +84,7 @@ void Bdpt::walk(std::vector<Vertex>& path, Eigen::Vector3d origin, Eigen::Vector
     v.label = 'D';
     path.push_back(v);
 
-    const Rgb rho = m.diffuse;
+    const Rgb rho = hit.diffuse;
     if (rho.maxComponent() == 0) return;
     direction = cosineDirection(hit.normal, rng.uniform(), rng.uniform());
     pdfDir = hit.normal.dot(direction) / M_PI;
@@ -154,6 +154,7 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
   y0.hit.normal = e.normal;
   y0.hit.front = true;
   y0.hit.material = &scene_.material(e.element);
+  y0.hit.diffuse = y0.hit.material->diffuse;  // never scattered: y0 only emits
   y0.beta = e.radiance / e.pdfArea;
   y0.pdfFwd = e.pdfArea;
   y0.label = 'L';
@@ -194,13 +195,13 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
           misWeight(light, eye, 0, t, 0, scene_.emitters().pdfArea(z.hit.element), lightTracing);
       add(z.beta * mz.emission * w, 0, t);
     }
-    if (mz.diffuse.maxComponent() == 0) continue;
+    if (z.hit.diffuse.maxComponent() == 0) continue;
 
     // s ≥ 1: connect y_{s−1} and z_{t−1} by a shadow ray.
     for (int s = 1; s <= lightCount; ++s) {
       const Vertex& y = light[s - 1];
       if (y.specular || y.hit.element == z.hit.element) continue;
-      const Rgb fy = s == 1 ? Rgb::all(1.0) : y.hit.material->diffuse / M_PI;  // Le is in y0.beta
+      const Rgb fy = s == 1 ? Rgb::all(1.0) : y.hit.diffuse / M_PI;  // Le is in y0.beta
       if (fy.maxComponent() == 0) continue;
       Eigen::Vector3d w = y.hit.position - z.hit.position;
       const double d2 = w.squaredNorm();
@@ -212,7 +213,7 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
       // Either end reached from the other by a cosine-distributed direction: cos·cos/(π d²).
       const double pdfAcross = cosY * cosZ / (M_PI * d2);
       const double weight = misWeight(light, eye, s, t, pdfAcross, pdfAcross, lightTracing);
-      add(y.beta * fy * (mz.diffuse / M_PI) * z.beta * (cosY * cosZ / d2 * weight), s, t);
+      add(y.beta * fy * (z.hit.diffuse / M_PI) * z.beta * (cosY * cosZ / d2 * weight), s, t);
     }
   }
 
@@ -223,7 +224,7 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
     for (int s = 1; s <= lightCount; ++s) {
       const Vertex& y = light[s - 1];
       if (y.specular) continue;
-      const Rgb fy = s == 1 ? Rgb::all(1.0) : y.hit.material->diffuse / M_PI;
+      const Rgb fy = s == 1 ? Rgb::all(1.0) : y.hit.diffuse / M_PI;
       if (fy.maxComponent() == 0) continue;
       Eigen::Vector3d w = camera_.position - y.hit.position;  // towards the camera
       const double d2 = w.squaredNorm();

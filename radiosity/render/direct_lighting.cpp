@@ -14,12 +14,12 @@ Rgb DirectLighting::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3
   if (!hit.hit() || !hit.front) return {};
   const Material& m = *hit.material;
   Rgb result = m.emission;
-  if (m.diffuse.maxComponent() == 0) return result;
+  if (hit.diffuse.maxComponent() == 0) return result;
   const int patch = scene_.mesh().patch(hit.element);
   Rgb irradiance;
   for (const PointLight& light : lights_)
     if (light.patch != patch) irradiance += light.irradiance(hit.position, hit.normal);
-  return result + m.diffuse * irradiance * (1.0 / M_PI);
+  return result + hit.diffuse * irradiance * (1.0 / M_PI);
 }
 
 }  // namespace rad

@@ -59,7 +59,7 @@ Rgb DistributionRayTracer::radiance(const Eigen::Vector3d& startOrigin,
     }
     const bool isGlossy = GlossyLobe::applies(m);
     const GlossyLobe glossy(m);  // used only when isGlossy
-    if (m.diffuse.maxComponent() == 0 && !isGlossy) break;
+    if (hit.diffuse.maxComponent() == 0 && !isGlossy) break;
     const Eigen::Vector3d mirror = reflect(direction, hit.normal);
 
     // Soft shadow: one point on the area emitters. The diffuse part has no other strategy; the
@@ -74,7 +74,7 @@ Rgb DistributionRayTracer::radiance(const Eigen::Vector3d& startOrigin,
         ++counts.shadow;
         if (!scene_.occluded(scene_.spawn(hit, w), s.position, time)) {
           const double lightPdf = s.pdfArea * d2 / cosY;
-          Rgb f = m.diffuse * (1.0 / M_PI);
+          Rgb f = hit.diffuse * (1.0 / M_PI);
           if (isGlossy)
             f += glossy.brdf(w, mirror) * powerHeuristic(lightPdf, glossy.pdf(w, mirror));
           result += throughput * f * s.radiance * (cosX / lightPdf);

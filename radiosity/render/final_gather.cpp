@@ -9,6 +9,7 @@
 #include "radiosity/core/rng.h"
 #include "radiosity/render/scattering.h"
 #include "radiosity/render/sobol_sampler.h"
+#include "radiosity/scene/surface_textures.h"
 
 namespace rad {
 
@@ -18,26 +19,38 @@ FinalGather::FinalGather(const RenderScene& scene, const std::vector<Rgb>& radio
   const int n = scene.mesh().elementCount();
   radiance_.resize(n);
   reflected_.resize(n);
+  emitted_.resize(n);
+  rho_.resize(n);
   std::vector<Eigen::Vector3d> perElement(n);
   for (int e = 0; e < n; ++e) {
     const Rgb b = radiosity.at(e);
-    const Rgb emitted = M_PI * scene.material(e).emission;
+    emitted_[e] = elementEmission(scene.scene(), scene.mesh(), e);
+    rho_[e] = elementReflectance(scene.scene(), scene.mesh(), e);
+    const Rgb emitted = M_PI * emitted_[e];
     radiance_[e] = b / M_PI;
     // B ≥ E holds exactly for a converged solution; a solver stopped early never goes below E.
     reflected_[e] = (b - emitted) / M_PI;
     for (int c = 0; c < 3; ++c) reflected_[e][c] = std::max(0.0, reflected_[e][c]);
     perElement[e] = {radiance_[e].r, radiance_[e].g, radiance_[e].b};
   }
-  if (options_.gatherRays == 0) vertexRadiance_ = interpolation_.interpolate(perElement);
-  if (options_.gatherRays == 0) return;
+  if (options_.gatherRays == 0) {
+    vertexRadiance_ = interpolation_.interpolate(perElement);
+    if (!scene.scene().textures.empty()) {
+      for (int e = 0; e < n; ++e) {
+        const Rgb h = incidentLight(radiance_[e], emitted_[e], rho_[e]);
+        perElement[e] = {h.r, h.g, h.b};
+      }
+      vertexIncident_ = interpolation_.interpolate(perElement);
+    }
+    return;
+  }
   elementSize_.resize(n);
   for (int e = 0; e < n; ++e) elementSize_[e] = std::sqrt(scene.mesh().area(e));
   // Not clamped at 0: where the solution's reflected light is below the element's mean shadow-ray
   // share, the point's own share makes up for it on average.
   ElementLight direct = meanLightSample();
   indirect_.resize(n);
-  for (int e = 0; e < n; ++e)
-    indirect_[e] = reflected_[e] - scene.material(e).diffuse * direct.mean[e];
+  for (int e = 0; e < n; ++e) indirect_[e] = reflected_[e] - rho_[e] * direct.mean[e];
   uniformLight_ = std::move(direct.uniform);
 }
 
@@ -54,7 +67,7 @@ FinalGather::ElementLight FinalGather::meanLightSample() const {
     RayCounts unused;
     for (int e = range.begin(); e < range.end(); ++e) {
       const Material& m = scene_.material(e);
-      if (m.isSpecular() || m.diffuse.maxComponent() == 0) continue;
+      if (m.isSpecular() || rho_[e].maxComponent() == 0) continue;
       const auto c = mesh.corners(e);
       SurfaceHit hit;
       hit.element = e;
@@ -88,7 +101,13 @@ Rgb FinalGather::interpolatedRadiance(const SurfaceHit& hit) const {
   const auto& t = interpolation_.triangle(hit.element);
   const Eigen::Vector3d v = (1 - hit.u - hit.v) * vertexRadiance_[t[0]] +
                             hit.u * vertexRadiance_[t[1]] + hit.v * vertexRadiance_[t[2]];
-  return {v.x(), v.y(), v.z()};
+  // The solution is one value per element; a texture varies inside it (wood grain, tiles): the
+  // light arriving there, reflected by the texel.
+  if (!hasReflectanceTexture(scene_.scene(), scene_.mesh(), hit.element))
+    return {v.x(), v.y(), v.z()};
+  const Eigen::Vector3d h = (1 - hit.u - hit.v) * vertexIncident_[t[0]] +
+                            hit.u * vertexIncident_[t[1]] + hit.v * vertexIncident_[t[2]];
+  return emitted_[hit.element] + hit.diffuse * Rgb(h.x(), h.y(), h.z());
 }
 
 // Multiple importance sampling (power heuristic, one light and one gather sample per pair): near
@@ -169,7 +188,7 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
       const double gathersPerLight = mayContinue ? double(options_.gatherRays) / lightRays() : 1.0;
       value += hit.material->emission * misWeight(gathersPerLight * bsdfPdf, lightPdf);
     }
-    const Rgb& rho = hit.material->diffuse;
+    const Rgb& rho = hit.diffuse;
     if (mayContinue && rho.maxComponent() > 0 && hit.distance < elementSize_[hit.element]) {
       // Closer than the element's size (a corner, a contact), where the element's one value is
       // least like the light at this very point: gather once more from the point, one shadow
@@ -186,9 +205,9 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
     // mean is kept: a far landing samples the element about evenly, so the mean is what its own
     // shadow ray would average to, without that ray's noise and cost (measured: docs/benchmarks.md,
     // "Error against time").
-    if (rho.maxComponent() > 0 && !uniformLight_[hit.element]) {
+    if (rho_[hit.element].maxComponent() > 0 && !uniformLight_[hit.element]) {
       const Point2 light{rng.uniform(), rng.uniform()};
-      value += indirect_[hit.element] + rho * lightSample(hit, light, counts);
+      value += indirect_[hit.element] + rho_[hit.element] * lightSample(hit, light, counts);
     } else {
       value += reflected_[hit.element];
     }
@@ -196,20 +215,25 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
   }
 }
 
-Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& position, Rng& rng,
+Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& barycentric, Rng& rng,
                                   RayCounts& counts) const {
+  const PatchMesh& mesh = scene_.mesh();
+  const auto c = mesh.corners(element);
   SurfaceHit hit;
   hit.element = element;
-  hit.position = position;
+  hit.position = barycentric[0] * c[0] + barycentric[1] * c[1] + barycentric[2] * c[2];
+  hit.u = barycentric[1];
+  hit.v = barycentric[2];
+  hit.diffuse = reflectanceAt(scene_.scene(), mesh, element, hit.u, hit.v);
   hit.normal = scene_.mesh().normal(element);
   hit.front = true;
   hit.material = &scene_.material(element);
   const Material& m = *hit.material;
   if (m.isSpecular()) return {};
-  if (m.diffuse.maxComponent() == 0) return m.emission;
+  if (hit.diffuse.maxComponent() == 0) return m.emission;
   RandomSampler sampler(rng);
   return m.emission +
-         m.diffuse * (directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts));
+         hit.diffuse * (directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts));
 }
 
 Rgb FinalGather::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
@@ -236,13 +260,13 @@ Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vecto
     }
     if (!hit.front) return {};
     if (options_.gatherRays == 0) return weight * interpolatedRadiance(hit);
-    if (m.diffuse.maxComponent() == 0) {
+    if (hit.diffuse.maxComponent() == 0) {
       // Nothing to reflect (a black emitter, say): its radiance is Ke, no gather needed.
       ++counts.gathersSkipped;
       return weight * m.emission;
     }
     const Rgb reflected = directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts);
-    return weight * (m.emission + m.diffuse * reflected);
+    return weight * (m.emission + hit.diffuse * reflected);
   }
 }
 

@@ -40,10 +40,10 @@ class FinalGather : public Integrator {
                RayCounts& counts) const override;
   std::string name() const override;
 
-  // Outgoing radiance at a point of a diffuse element, seen from its front (for baking
-  // lightmaps by per-texel final gather): Ke + rho·(direct + gathered light). Mirrors and glass
-  // hold no radiance of their own here: 0.
-  Rgb outgoingRadiance(int element, const Eigen::Vector3d& position, Rng& rng,
+  // Outgoing radiance at a point of a diffuse element (barycentrics over its corners), seen from
+  // its front (for baking lightmaps by per-texel final gather): Ke + rho·(direct + gathered
+  // light), rho the texel there. Mirrors and glass hold no radiance of their own here: 0.
+  Rgb outgoingRadiance(int element, const Eigen::Vector3d& barycentric, Rng& rng,
                        RayCounts& counts) const;
 
  private:
@@ -78,6 +78,11 @@ class FinalGather : public Integrator {
   FinalGatherOptions options_;
   std::vector<Rgb> radiance_;   // B/π per element
   std::vector<Rgb> reflected_;  // (B − E)/π per element
+  std::vector<Rgb> emitted_;    // Le per element (its texture's average)
+  std::vector<Rgb> rho_;        // reflectance per element (its texture's average), as solved
+  // H/π interpolated to the vertices (gatherRays 0 with textures): the albedo-free light that
+  // the texel's ρ multiplies, smooth across elements of different mean reflectance.
+  std::vector<Eigen::Vector3d> vertexIncident_;
   // (B − E)/π − ρ·(the element's mean of lightSample) per element: the solution's reflected
   // light less its shadow-ray share, which a gather ray's landing point takes at the point.
   std::vector<Rgb> indirect_;

@@ -67,7 +67,7 @@ Rgb PathTracer::trace(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d&
         add(throughput * m.emission * powerHeuristic(bsdfPdf, lightPdf), {});
       }
     }
-    const Rgb rho = m.diffuse;
+    const Rgb rho = hit.diffuse;
     if (rho.maxComponent() == 0) break;
     if (binning) eyeVertices.push_back('D');
 

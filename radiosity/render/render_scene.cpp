@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "radiosity/scene/surface_textures.h"
+
 namespace rad {
 
 RenderScene::RenderScene(const Scene& scene, const PatchMesh& mesh, const RayCaster& caster,
@@ -35,6 +37,7 @@ SurfaceHit RenderScene::intersect(const Eigen::Vector3d& origin, const Eigen::Ve
   hit.normal = normals_[h.element];
   hit.front = hit.normal.dot(direction) < 0;
   hit.material = &material(h.element);
+  hit.diffuse = reflectanceAt(scene_, mesh_, h.element, h.u, h.v);
   return hit;
 }
 

@@ -35,6 +35,9 @@ struct SurfaceHit {
   double u = 0, v = 0, distance = 0;
   bool front = false;  // the ray arrived on the front (counter-clockwise) side
   const Material* material = nullptr;
+  // The diffuse reflectance at this point: Kd × the colour map's bilinear texel (Kd alone when
+  // untextured). What every render method scatters with, so texture detail shows.
+  Rgb diffuse;
   bool hit() const { return element >= 0; }
 };
 

@@ -57,7 +57,7 @@ Rgb WhittedRayTracer::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d
 
   if (!hit.front) return {};  // back faces are black, as in the radiosity pass
   Rgb result = m.emission;
-  if (m.diffuse.maxComponent() == 0) return result;
+  if (hit.diffuse.maxComponent() == 0) return result;
   const int patch = scene_.mesh().patch(hit.element);
   Rgb irradiance;
   for (const PointLight& light : lights_) {
@@ -68,7 +68,7 @@ Rgb WhittedRayTracer::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d
     const Eigen::Vector3d w = (light.position - hit.position).normalized();
     if (!scene_.occluded(scene_.spawn(hit, w), light.position)) irradiance += e;
   }
-  return result + m.diffuse * irradiance * (1.0 / M_PI);
+  return result + hit.diffuse * irradiance * (1.0 / M_PI);
 }
 
 }  // namespace rad

@@ -25,10 +25,19 @@ MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
   static const std::set<std::string> kScalars = {"Ni", "Ns"};
 
   MtlLineCheck result;
+  // The Kd-1 warning of the current material, said when the material ends without a map_Kd
+  // (with one, Kd 1 only lets the texture through as it is, which is what exporters mean).
+  std::string kdOneWarning;
+  auto endMaterial = [&] {
+    if (!kdOneWarning.empty() && !result.materials.back().diffuseMap.present())
+      logWarning(kdOneWarning);
+    kdOneWarning.clear();
+  };
   forEachLine(text, [&](int line, const std::vector<std::string>& tokens) {
     if (!tokens.empty()) {
       const std::string& keyword = tokens.front();
       if (keyword == "newmtl") {
+        if (!result.materials.empty()) endMaterial();
         if (tokens.size() < 2) throw InputError(file, line, "'newmtl' needs a material name");
         // tinyobjloader keeps the rest of the line as the name but `usemtl` reads one word.
         if (tokens.size() > 2) {
@@ -42,7 +51,11 @@ MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
             throw InputError(
                 file, line,
                 "material name contains a control character (byte " + std::to_string(ch) + ")");
-        result.materials.push_back({tokens[1], file, line});
+        MaterialSource material;
+        material.name = tokens[1];
+        material.file = file;
+        material.line = line;
+        result.materials.push_back(std::move(material));
       } else if (result.materials.empty()) {
         // tinyobjloader would silently give these values to an unnamed material.
         throw InputError(file, line, "'" + keyword + "' before any 'newmtl'");
@@ -59,9 +72,10 @@ MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
           // Exporters write Kd 1 for white (often times a texture): accepted, but such a surface
           // keeps every bit of light it receives, so say so once, at its line.
           if (*std::max_element(rgb.begin(), rgb.end()) == 1)
-            logWarning(file + ":" + std::to_string(line) + ": Kd " + channels(rgb) +
-                       ": reflectance 1 keeps all the light a surface receives; a closed scene "
-                       "of such surfaces cannot converge (it stops at the iteration budget)");
+            kdOneWarning = file + ":" + std::to_string(line) + ": Kd " + channels(rgb) +
+                           ": reflectance 1 keeps all the light a surface receives; a closed "
+                           "scene of such surfaces cannot converge (it stops at the iteration "
+                           "budget)";
         } else if (keyword == "Ke") {
           for (double c : rgb) {
             if (c < 0) {
@@ -70,6 +84,12 @@ MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
             }
           }
         }
+      } else if (keyword == "map_Kd") {
+        result.materials.back().diffuseMap = parseTextureMap(tokens, file, line);
+      } else if (keyword == "map_Ke") {
+        result.materials.back().emissionMap = parseTextureMap(tokens, file, line);
+      } else if (keyword == "map_d") {
+        result.materials.back().coverageMap = parseTextureMap(tokens, file, line);
       } else if (kScalars.count(keyword)) {
         parseNumbers(tokens, 1, 1, file, line);
       } else if (keyword == "illum") {
@@ -84,6 +104,7 @@ MtlLineCheck checkMtlText(const std::string& text, const std::string& file) {
     result.text += joinTokens(tokens);
     result.text += '\n';
   });
+  if (!result.materials.empty()) endMaterial();
   return result;
 }
 

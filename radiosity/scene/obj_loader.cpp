@@ -9,6 +9,7 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
 #include "radiosity/scene/obj_line_check.h"
+#include "radiosity/scene/obj_textures.h"
 
 namespace rad {
 namespace {
@@ -33,6 +34,33 @@ std::string lineList(const std::vector<int>& lines) {
   }
   if (lines.size() > kMaxListedLines) text += ", ...";
   return text;
+}
+
+// The material's images: map_Kd multiplies Kd, map_Ke multiplies Ke, map_d (or the alpha of
+// map_Kd, when it has transparent texels) cuts the surface out.
+void attachTextures(Material& material, const MaterialSource& source, ObjTextureLoader& loader,
+                    const std::vector<Texture>& textures) {
+  if (source.diffuseMap.present()) {
+    material.diffuseTexture = loader.colour(source.diffuseMap);
+    material.alphaFromDiffuse = hasTransparentTexel(textures[material.diffuseTexture]);
+    // Maya and 3ds Max write Kd 0 0 0 with a map_Kd to mean "the texture alone": read literally
+    // it would make the surface black, which no one who attached a texture means.
+    if (material.diffuse.maxComponent() == 0) {
+      material.diffuse = Rgb::all(1);
+      logInfo(source.file + ":" + std::to_string(source.line) + ": material '" + source.name +
+              "' has Kd 0 0 0 and a map_Kd: using the texture alone (Kd 1 1 1), as the "
+              "exporters that write this mean");
+    }
+  }
+  if (source.emissionMap.present()) {
+    material.emissionTexture = loader.colour(source.emissionMap);
+    if (material.emission.maxComponent() == 0)
+      logWarning(source.emissionMap.file + ":" + std::to_string(source.emissionMap.line) +
+                 ": material '" + source.name +
+                 "' has a map_Ke but Ke 0 0 0: the map multiplies Ke, so the surface emits "
+                 "nothing");
+  }
+  if (source.coverageMap.present()) material.alphaTexture = loader.coverage(source.coverageMap);
 }
 
 Material convertMaterial(const tinyobj::material_t& m, const MaterialSource& source) {
@@ -212,12 +240,14 @@ Scene loadObjScene(const std::string& objPath) {
                          " materials, the MTL libraries define " +
                          std::to_string(check.materials.size()));
   }
+  ObjTextureLoader textureLoader(&scene.textures);
   for (std::size_t i = 0; i < check.materials.size(); ++i) {
     scene.materials.push_back(convertMaterial(loaded[i], check.materials[i]));
+    attachTextures(scene.materials.back(), check.materials[i], textureLoader, scene.textures);
   }
 
   const int defaultId = static_cast<int>(scene.materials.size());
-  std::vector<int> degenerateLines, defaultLines;
+  std::vector<int> degenerateLines, defaultLines, untexturedLines;
   const double diagonal2 = squaredDiagonal(scene.positions);
   for (ScenePolygon& polygon : readPolygons(reader.GetShapes(), reader.GetAttrib().texcoords, check,
                                             static_cast<int>(scene.materials.size()))) {
@@ -234,6 +264,11 @@ Scene loadObjScene(const std::string& objPath) {
     if (polygon.material < 0) {
       polygon.material = defaultId;
       defaultLines.push_back(polygon.sourceLine);
+    } else {
+      const Material& material = scene.materials[polygon.material];
+      const bool textured = material.diffuseTexture >= 0 || material.emissionTexture >= 0 ||
+                            material.alphaTexture >= 0;
+      if (textured && polygon.uvs.empty()) untexturedLines.push_back(polygon.sourceLine);
     }
     scene.polygons.push_back(std::move(polygon));
   }
@@ -243,6 +278,13 @@ Scene loadObjScene(const std::string& objPath) {
     logWarning(objPath + ": skipped " + std::to_string(degenerateLines.size()) +
                " degenerate face(s) with repeated vertices or zero area (line " +
                lineList(degenerateLines) + ")");
+  }
+  if (!untexturedLines.empty()) {
+    // A texture needs coordinates to be looked up; without them the material's factors (Kd, Ke,
+    // opaque) are all that is known, which is still the material the face asked for.
+    logWarning(objPath + ": " + std::to_string(untexturedLines.size()) +
+               " face(s) with a textured material have no texture coordinates ('vt') (line " +
+               lineList(untexturedLines) + "); they use the material's Kd/Ke alone");
   }
   if (!defaultLines.empty()) {
     scene.materials.push_back(defaultMaterial(objPath));
@@ -255,6 +297,8 @@ Scene loadObjScene(const std::string& objPath) {
           std::to_string(scene.polygons.size()) + " polygons, " +
           std::to_string(scene.materials.size()) + " materials, " +
           std::to_string(scene.emitterCount()) + " emitting polygons" +
+          (scene.textures.empty() ? std::string()
+                                  : ", " + std::to_string(scene.textures.size()) + " textures") +
           (scene.polygonsWithUvs()
                ? ", " + std::to_string(scene.polygonsWithUvs()) + " with texture coordinates"
                : std::string()));

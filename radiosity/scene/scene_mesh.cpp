@@ -3,14 +3,11 @@
 namespace rad {
 
 PatchMesh buildPatchMesh(const Scene& scene) {
-  // The mesh carries the lightmap's UVs (bakeUvs) only when every polygon has
-  // them (the lightmap's use of scene UVs requires that, and reports the faces without).
-  bool uvs = !scene.polygons.empty();
-  for (const ScenePolygon& p : scene.polygons) uvs = uvs && !bakeUvs(p).empty();
+  // Every polygon's texture coordinates go to its elements, for texture look-ups; a lightmap in
+  // the scene's UVs needs them on every element (PatchMesh::hasUvs) and reports the faces without.
   std::vector<PatchPolygon> polygons;
   polygons.reserve(scene.polygons.size());
-  for (const ScenePolygon& p : scene.polygons)
-    polygons.push_back({p.vertices, p.material, uvs ? bakeUvs(p) : std::vector<Eigen::Vector2d>{}});
+  for (const ScenePolygon& p : scene.polygons) polygons.push_back({p.vertices, p.material, p.uvs});
   return PatchMesh(scene.positions, polygons);
 }
 

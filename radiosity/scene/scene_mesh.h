@@ -12,7 +12,7 @@ inline const std::vector<Eigen::Vector2d>& bakeUvs(const ScenePolygon& polygon) 
 }
 
 // The scene's polygons as patches of a PatchMesh (one patch per polygon, same material index),
-// with their texture coordinates when every polygon has them.
+// with the texture coordinates of each polygon that has them.
 PatchMesh buildPatchMesh(const Scene& scene);
 
 }  // namespace rad

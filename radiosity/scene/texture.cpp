@@ -37,6 +37,33 @@ int wrap(int i, int n) {
   return m < 0 ? m + n : m;
 }
 
+// Footprints spanning up to this many texel cells (bounding box) are averaged exactly, by
+// clipping the triangle to each cell; larger ones are sampled (an element over many texels barely
+// depends on how the few along its edges are split).
+constexpr double kExactCells = 256;
+
+// Area of the convex polygon `p` clipped to the cell [x, x+1] × [y, y+1] (Sutherland–Hodgman).
+double areaInCell(std::vector<Eigen::Vector2d> p, double x, double y) {
+  auto clip = [&](int axis, double bound, bool keepBelow) {
+    std::vector<Eigen::Vector2d> out;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Eigen::Vector2d &a = p[i], &b = p[(i + 1) % p.size()];
+      const bool inA = keepBelow ? a[axis] <= bound : a[axis] >= bound;
+      const bool inB = keepBelow ? b[axis] <= bound : b[axis] >= bound;
+      if (inA) out.push_back(a);
+      if (inA != inB) out.push_back(a + (b - a) * ((bound - a[axis]) / (b[axis] - a[axis])));
+    }
+    p = std::move(out);
+  };
+  clip(0, x, false), clip(0, x + 1, true), clip(1, y, false), clip(1, y + 1, true);
+  double twice = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Eigen::Vector2d &a = p[i], &b = p[(i + 1) % p.size()];
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  return 0.5 * std::abs(twice);
+}
+
 }  // namespace
 
 double srgbToLinear(double c) {
@@ -74,12 +101,44 @@ double Texture::alpha(const Eigen::Vector2d& uv) const { return bilinear(uv)[3];
 
 std::array<double, 4> Texture::average(const std::array<Eigen::Vector2d, 3>& uv) const {
   // The image is taken as piecewise constant (each texel a little square), so the average is
-  // the texels' values weighted by the area of the triangle over each: nearest look-ups.
+  // the texels' values weighted by the area of the triangle over each: exact for small
+  // footprints, else nearest look-ups.
   // The triangle's footprint in texels decides the sampling: split it into k² similar
   // sub-triangles (k along each edge) and take each one's centroid, about sixteen per texel
   // covered (1 to 4096 sub-triangles).
   const Eigen::Vector2d e1 = uv[1] - uv[0], e2 = uv[2] - uv[0];
   const double texels = 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x()) * width * height;
+  {
+    // Texel space: x = u·width, y = (1 − v)·height, cell (i, j) the texel (i, j) wrapped.
+    std::vector<Eigen::Vector2d> t;
+    for (const Eigen::Vector2d& p : uv) t.emplace_back(p.x() * width, (1.0 - p.y()) * height);
+    const Eigen::Vector2d lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]),
+                          hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
+    const double cells = (std::floor(hi.x()) - std::floor(lo.x()) + 1) *
+                         (std::floor(hi.y()) - std::floor(lo.y()) + 1);
+    if (texels > 0 && lo.allFinite() && hi.allFinite() && cells <= kExactCells) {
+      // Shift to the first period so the cell indices stay small.
+      const Eigen::Vector2d shift(std::floor(lo.x() / width) * width,
+                                  std::floor(lo.y() / height) * height);
+      for (Eigen::Vector2d& p : t) p -= shift;
+      std::array<double, 4> sum{};
+      double area = 0;
+      for (int y = static_cast<int>(std::floor(lo.y() - shift.y()));
+           y <= static_cast<int>(std::floor(hi.y() - shift.y())); ++y)
+        for (int x = static_cast<int>(std::floor(lo.x() - shift.x()));
+             x <= static_cast<int>(std::floor(hi.x() - shift.x())); ++x) {
+          const double a = areaInCell(t, x, y);
+          if (!(a > 0)) continue;
+          const auto v = texel(x, y);
+          for (int c = 0; c < 4; ++c) sum[c] += a * v[c];
+          area += a;
+        }
+      if (area > 0) {
+        for (double& s : sum) s /= area;
+        return sum;
+      }
+    }
+  }
   const int k = std::clamp(static_cast<int>(std::ceil(std::sqrt(16 * texels))), 1, 64);
   std::array<double, 4> sum{};
   int n = 0;

@@ -52,7 +52,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"no_emitter.obj", "no_emitter.obj", "no emitter"},
         BadCase{"bad_index.obj", "bad_index.obj:14:", "out of range"},
         BadCase{"short_face.obj", "short_face.obj:14:", "at least 3"},
-        BadCase{"does_not_exist.obj", "does_not_exist.obj", "cannot open"}),
+        BadCase{"does_not_exist.obj", "does_not_exist.obj", "cannot open"},
+        BadCase{"texture_missing.obj", "texture_missing.mtl:5:", "cannot open the texture file"},
+        BadCase{"texture_corrupt.obj", "texture_corrupt.mtl:5:", "corrupt.png"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.file.substr(0, info.param.file.find('.'));
       for (char& ch : name)

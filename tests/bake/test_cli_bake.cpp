@@ -4,6 +4,7 @@
 #include <tiny_gltf.h>
 
 #include <Eigen/Core>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -262,6 +263,75 @@ TEST(CliBake, FurnaceBakedIntoItsOwnUvsIsUniformInsideItsIslands) {
   for (const auto& uv : uvs) ASSERT_GE(island(uv.x(), 1 - uv.y()), 0) << uv.transpose();
   validate(dir / "scene_baked.glb");
   fs::remove_all(dir);
+}
+
+// A floor with a checker colour map (Kd 0.9 × sRGB 200 and 60) under a uniform sky of
+// radiance 2, baked into its own UVs (the texture's): on an open upward plane every point
+// receives H = π L exactly, so each texel holds Kd · checker(texel) · L (radiance) or L itself
+// (irradiance content, H/π: no albedo).
+fs::path checkerFloorScene() {
+  const fs::path dir = scratchPath("bake_checker_scene");
+  fs::create_directories(dir);
+  // 64×64 texels in blocks of 32, so the bilinear look-up at each lightmap texel's centre
+  // (at least 1/64 from a border) reads one block.
+  std::string tga = {0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 64, 0, 64, 0, 24, 0};
+  for (int y = 0; y < 64; ++y)  // rows bottom first: light at (u, v) < 1/2 and > 1/2
+    for (int x = 0; x < 64; ++x)
+      tga += std::string(3, static_cast<char>((x < 32) == (y < 32) ? 200 : 60));
+  std::ofstream(dir / "checker.tga", std::ios::binary) << tga;
+  std::ofstream(dir / "floor.mtl") << "newmtl checker\nKd 0.9 0.9 0.9\nmap_Kd checker.tga\n";
+  std::ofstream(dir / "floor.obj")
+      << "mtllib floor.mtl\nv -1 0 1\nv 1 0 1\nv 1 0 -1\nv -1 0 -1\n"
+         "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl checker\nf 1/1 2/2 3/3 4/4\n";
+  return dir / "floor.obj";
+}
+
+double srgbToLinearByte(unsigned char byte) {
+  const double c = byte / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+TEST(CliBake, TexturedFloorShowsItsTexelsAsRadianceAndNoAlbedoAsIrradiance) {
+  const fs::path scene = checkerFloorScene();
+  for (const std::string content : {"radiance", "irradiance"}) {
+    const fs::path dir = scratchPath("bake_checker_" + content);
+    const auto r = runRadiosity("bake " + scene.string() + " --out " + dir.string() +
+                                " --sky 2 2 2 --use-scene-uvs --elements 100 --rays 64 "
+                                "--lightmap-size 32 --lightmap-content " +
+                                content + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    const ImageRgb image = readExr((dir / "lightmap.exr").string());
+    ASSERT_EQ(image.width, 32);
+    int light = 0, dark = 0;
+    for (int y = 0; y < 32; ++y)
+      for (int x = 0; x < 32; ++x) {
+        const Rgb& p = image.pixels[static_cast<size_t>(y) * 32 + x];
+        if (p.isZero()) continue;  // outside the island
+        const double u = (x + 0.5) / 32, v = 1 - (y + 0.5) / 32;
+        const bool isLight = (u < 0.5) == (v < 0.5);
+        const double expected =
+            content == "irradiance" ? 2.0 : 0.9 * srgbToLinearByte(isLight ? 200 : 60) * 2.0;
+        ASSERT_NEAR(p.g, expected, 1e-5 * expected) << content << " at " << x << "," << y;
+        ++(isLight ? light : dark);
+      }
+    EXPECT_GT(light, 200);  // the checker's both halves are there
+    EXPECT_GT(dark, 200);
+    const auto summary = nlohmann::json::parse(readText(dir / "bake.json"));
+    EXPECT_EQ(summary["lightmap"]["content"], content);
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, (dir / "scene_baked.glb").string()))
+        << err;
+    EXPECT_EQ(model.asset.extras.Get("radiosity").Get("lightmap_content").Get<std::string>(),
+              content);
+    fs::remove_all(dir);
+  }
+  const auto bad =
+      runRadiosity("bake " + scene.string() + " --out " + scratchPath("bake_checker_bad").string() +
+                   " --sky 2 2 2 --lightmap-content albedo");
+  EXPECT_NE(bad.exitCode, 0);
+  fs::remove_all(scene.parent_path());
 }
 
 TEST(CliBake, SceneUvsMustExistAndExcludeGeneratedCharts) {

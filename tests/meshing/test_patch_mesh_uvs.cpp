@@ -56,14 +56,31 @@ TEST(PatchMeshUvs, BisectionInterpolatesAcrossASeam) {
   expectAffineUvs(mesh);
 }
 
-TEST(PatchMeshUvs, MeshWithoutUvsSaysSoAndMixedInputIsRefused) {
+TEST(PatchMeshUvs, MeshWithoutUvsSaysSoAndAWrongUvCountIsRefused) {
   const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   const PatchMesh plain(p, {{{0, 1, 2}, 0, {}}, {{0, 2, 3}, 0, {}}});
   EXPECT_FALSE(plain.hasUvs());
+  EXPECT_FALSE(plain.hasUvs(0));
   EXPECT_THROW(plain.cornerUvs(0), std::logic_error);
-  EXPECT_THROW(PatchMesh(p, {{{0, 1, 2}, 0, {{0, 0}, {1, 0}, {1, 1}}}, {{0, 2, 3}, 0, {}}}),
-               rad::CheckFailure);
   EXPECT_THROW(PatchMesh(p, {{{0, 1, 2}, 0, {{0, 0}, {1, 0}}}}), rad::CheckFailure);
+}
+
+// Textured and untextured polygons in one scene: each element carries UVs exactly when its
+// polygon had them, through any refinement; the mesh as a whole has UVs only when all do.
+TEST(PatchMeshUvs, PolygonsWithAndWithoutUvsMix) {
+  const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  PatchMesh mesh(p, {{{0, 1, 2}, 0, {{0, 0}, {1, 0}, {1, 1}}}, {{0, 2, 3}, 1, {}}});
+  EXPECT_FALSE(mesh.hasUvs());
+  mesh.subdivideUniform(0.01);
+  ASSERT_GT(mesh.elementCount(), 50);
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    ASSERT_EQ(mesh.hasUvs(e), mesh.patch(e) == 0) << "element " << e;
+    if (!mesh.hasUvs(e)) continue;
+    const auto corners = mesh.corners(e);
+    const auto uvs = mesh.cornerUvs(e);
+    for (int k = 0; k < 3; ++k)  // the map of polygon 0 is (u, v) = (x, y)
+      EXPECT_NEAR((uvs[k] - corners[k].head<2>()).norm(), 0, 1e-12) << "element " << e;
+  }
 }
 
 }  // namespace
