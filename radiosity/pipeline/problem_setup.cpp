@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "radiosity/scene/coverage.h"
+
 namespace rad {
 
 RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
@@ -11,11 +13,21 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
   problem.emission.resize(n);
   problem.reflectance.resize(n);
   problem.area.resize(n);
+  std::vector<CoverageMap> coverage;
+  for (const Material& m : scene.materials) coverage.emplace_back(m, scene.textures);
   for (int e = 0; e < n; ++e) {
     const Material& m = scene.materials[mesh.material(e)];
     problem.emission[e] = M_PI * m.emission;  // Lambertian emitter: exitance = pi × radiance
     // Mirrors and glass hold no radiosity: rays pass on through them (extended form factors).
     problem.reflectance[e] = m.isSpecular() ? Rgb() : m.diffuse;
+    // A cut-out element keeps its area; only its covered fraction (rays pass the rest, see
+    // RayCaster) emits and reflects, so both scale by its average coverage.
+    const CoverageMap& mask = coverage[static_cast<std::size_t>(mesh.material(e))];
+    if (mask.hasHoles() && mesh.hasUvs()) {
+      const double covered = mask.average(mesh.cornerUvs(e));
+      problem.emission[e] = covered * problem.emission[e];
+      problem.reflectance[e] = covered * problem.reflectance[e];
+    }
     problem.area[e] = mesh.area(e);
   }
   return problem;

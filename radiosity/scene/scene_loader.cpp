@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
 #include "radiosity/scene/obj_loader.h"
 
 namespace rad {
@@ -76,9 +77,13 @@ std::string extensionOf(const std::string& path) {
 
 }  // namespace
 
-Scene loadScene(const std::string& path, const LightInput& lights) {
+Scene loadScene(const std::string& path, const LightInput& lights, const TwoSidedInput& twoSided) {
   Scene scene = loadScene(path);
   scene.lights = findSceneLights(path, lights);
+  applyTwoSidedInput(scene, twoSided);
+  const int backSides = addBackSides(scene);
+  if (backSides > 0)
+    logInfo(std::to_string(backSides) + " two-sided polygons: each side gets its own radiosity");
   return scene;
 }
 
