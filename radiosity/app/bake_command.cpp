@@ -86,7 +86,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                      ": dilated texels of neighbouring charts would meet");
   // The scene's UVs are checked before the solve, so a bad layout fails in seconds.
   const auto loadStart = std::chrono::steady_clock::now();
-  Scene scene = loadScene(o.solve.scenePath, o.solve.lights);
+  Scene scene = loadScene(o.solve.scenePath, o.solve.lights, o.solve.twoSided);
   if (o.gather > 0 && !scene.lights.empty())
     throw InputError("bake --gather " + std::to_string(o.gather) +
                      " does not sample point, spot, directional or sky lights yet; bake without "
@@ -152,7 +152,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     if (o.gather > 0) {
       // Per-texel final gather: direct light by shadow rays to the emitters and gathered light
       // from the solution at every texel, for shadows sharper than the elements.
-      const RayCaster caster(mesh);
+      const RayCaster caster(mesh, solution.scene);
       const RenderScene view(solution.scene, mesh, caster);
       const FinalGather gather(view, solution.radiosity, {o.gather, 16});
       const uint64_t seed = o.solve.seed;

@@ -48,7 +48,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   if (method.needsSolve) {
     if (!solved_) {
       const auto t = Clock::now();
-      Scene scene = loadScene(solve_.scenePath, solve_.lights);
+      Scene scene = loadScene(solve_.scenePath, solve_.lights, solve_.twoSided);
       requireEmitter(scene);
       solved_ = std::make_unique<SolveResult>(solveOrReuse(std::move(scene), solve_, source_));
       for (const SkipNote& note : solved_->report.skipped)  // logged by solveOrReuse
@@ -56,7 +56,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
       solveSeconds_ += since(t);
       const auto b = Clock::now();
       const Solution& solution = solved_->solution;
-      solvedCaster_ = std::make_unique<RayCaster>(*solution.mesh);
+      solvedCaster_ = std::make_unique<RayCaster>(*solution.mesh, solution.scene);
       solvedView_ = std::make_unique<RenderScene>(solution.scene, *solution.mesh, *solvedCaster_);
       bvhSeconds_ += since(b);
     }
@@ -66,7 +66,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   }
 
   if (!scene_) {
-    scene_ = std::make_unique<Scene>(loadScene(solve_.scenePath, solve_.lights));
+    scene_ = std::make_unique<Scene>(loadScene(solve_.scenePath, solve_.lights, solve_.twoSided));
     requireEmitter(*scene_);
     mesh_ = std::make_unique<PatchMesh>(buildPatchMesh(*scene_));
     skip("radiosity solve", "--method " + method.name + " needs only the scene's triangles");
@@ -75,7 +75,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
     if (!motionView_) {
       motion_ = std::make_unique<SceneMotion>(*scene_, *mesh_, motionSpec_);
       const auto b = Clock::now();
-      motionCaster_ = std::make_unique<RayCaster>(*mesh_, &motion_->vertices());
+      motionCaster_ = std::make_unique<RayCaster>(*mesh_, *scene_, &motion_->vertices());
       motionView_ = std::make_unique<RenderScene>(*scene_, *mesh_, *motionCaster_, motion_.get());
       bvhSeconds_ += since(b);
       logInfo("motion blur: " + std::to_string(motionSpec_.objects.size()) + " moving object(s), " +
@@ -89,7 +89,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
     skip("motion blur for --method " + method.name, "only methods that sample time render it");
   if (!view_) {
     const auto b = Clock::now();
-    caster_ = std::make_unique<RayCaster>(*mesh_);
+    caster_ = std::make_unique<RayCaster>(*mesh_, *scene_);
     view_ = std::make_unique<RenderScene>(*scene_, *mesh_, *caster_);
     bvhSeconds_ += since(b);
   }

@@ -42,6 +42,14 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
           "it), angular diameter 0.53 degrees")
       ->expected(6)
       ->type_name("DX DY DZ R G B");
+  command.add_flag("--two-sided", options.twoSided.all,
+                   "Every surface is two-sided: lit, reflecting and seen on both sides, each side "
+                   "with its own radiosity (glTF says it per material: doubleSided)");
+  command
+      .add_option("--two-sided-materials", options.twoSided.materials,
+                  "These materials (comma-separated names) are two-sided")
+      ->delimiter(',')
+      ->type_name("NAME,...");
   command
       .add_option(
           "--solver", solverName,

@@ -35,6 +35,9 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
   const bool hemisphere = options.formFactors == FormFactorMethod::Hemisphere;
   int emitterElements = 0;
   for (const Rgb& e : s.problem.emission) emitterElements += e.maxComponent() > 0;
+  int backSideElements = 0;  // elements of the back copies of two-sided polygons
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    backSideElements += s.scene.polygons[static_cast<std::size_t>(mesh.patch(e))].backSideOf >= 0;
   json skipped = json::array();
   for (const SkipNote& s : r.skipped) skipped.push_back({{"what", s.what}, {"why", s.why}});
   json materials = json::array();
@@ -53,6 +56,8 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
         {"triangles", mesh.inputTriangleCount()},
         {"patches", mesh.patchCount()},
         {"elements", mesh.elementCount()},
+        {"back_side_polygons", s.scene.backSideCount()},
+        {"back_side_elements", backSideElements},
         {"vertices", mesh.vertexCount()},
         {"emitters", s.scene.emitterCount()},
         {"emitter_elements", emitterElements},

@@ -34,7 +34,7 @@ class ViewerSolve final : public LiveSolution {
   ViewerSolve(const Solution& solution, const SolveOptions& options)
       : solution_(solution),
         kind_(options.solver),
-        rays_(*solution.mesh),
+        rays_(*solution.mesh, solution.scene),
         formFactors_(solution.scene, *solution.mesh, rays_, solution.problem, options),
         limits_(iterationLimits(options, solution.mesh->elementCount(),
                                 std::chrono::steady_clock::now())) {
@@ -179,7 +179,8 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
   options.scenePath = args.input;
   finishSolveOptions(command, options, solverName);
   const SolveResult result =
-      solveOrReuse(loadScene(options.scenePath, options.lights), options, {args.solutionDir, ""});
+      solveOrReuse(loadScene(options.scenePath, options.lights, options.twoSided), options,
+                   {args.solutionDir, ""});
   const Solution& solution = result.solution;
   cameraFor(options.scenePath);
   const ToneMap toneMap =

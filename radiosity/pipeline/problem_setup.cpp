@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "radiosity/scene/surface_textures.h"
+#include "radiosity/scene/coverage.h"
 
 namespace rad {
 
@@ -13,6 +14,8 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
   problem.emission.resize(n);
   problem.reflectance.resize(n);
   problem.area.resize(n);
+  std::vector<CoverageMap> coverage;
+  for (const Material& m : scene.materials) coverage.emplace_back(m, scene.textures);
   for (int e = 0; e < n; ++e) {
     const Material& m = scene.materials[mesh.material(e)];
     // Lambertian emitter: exitance = pi × radiance. Textures enter as their area average over
@@ -20,6 +23,14 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
     problem.emission[e] = M_PI * elementEmission(scene, mesh, e);
     // Mirrors and glass hold no radiosity: rays pass on through them (extended form factors).
     problem.reflectance[e] = m.isSpecular() ? Rgb() : elementReflectance(scene, mesh, e);
+    // A cut-out element keeps its area; only its covered fraction (rays pass the rest, see
+    // RayCaster) emits and reflects, so both scale by its average coverage.
+    const CoverageMap& mask = coverage[static_cast<std::size_t>(mesh.material(e))];
+    if (mask.hasHoles() && mesh.hasUvs()) {
+      const double covered = mask.average(mesh.cornerUvs(e));
+      problem.emission[e] = covered * problem.emission[e];
+      problem.reflectance[e] = covered * problem.reflectance[e];
+    }
     problem.area[e] = mesh.area(e);
   }
   return problem;

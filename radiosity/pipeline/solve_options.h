@@ -5,6 +5,7 @@
 #include <string>
 
 #include "radiosity/scene/lights.h"
+#include "radiosity/scene/two_sided.h"
 #include "radiosity/solvers/solver_factory.h"
 
 namespace rad {
@@ -20,7 +21,8 @@ std::string formFactorMethodName(FormFactorMethod method);
 struct SolveOptions {
   std::string scenePath;
   std::string outputDir;
-  LightInput lights;  // scene input: --lights FILE (default the sidecar), --sky, --sun
+  LightInput lights;       // scene input: --lights FILE (default the sidecar), --sky, --sun
+  TwoSidedInput twoSided;  // scene input: --two-sided, --two-sided-materials
   SolverKind solver = SolverKind::Progressive;
   int raysPerElement = 1024;  // hemisphere: rays per element row
   double maxArea = 0;         // scene units²; 0: totalArea / targetElements

@@ -86,7 +86,7 @@ void warnIfNotConverged(const IterationLimits& limits, const Solution& solution,
 
 SolveResult runSolve(const SolveOptions& options) {
   const auto start = Clock::now();
-  Scene scene = loadScene(options.scenePath, options.lights);
+  Scene scene = loadScene(options.scenePath, options.lights, options.twoSided);
   const double loadSeconds = since(start);
   SolveResult result = solveScene(std::move(scene), options);
   result.report.times.load = loadSeconds;
@@ -116,7 +116,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
           formatNumber(report.maxArea) + ")");
   throwIfInterrupted();
   t = Clock::now();
-  const RayCaster rays(*solution.mesh);
+  const RayCaster rays(*solution.mesh, solution.scene);
   report.times.bvh = since(t);
   solution.problem = makeProblem(solution.scene, *solution.mesh);
   DirectLightStage directLight(solution.scene, *solution.mesh, rays, options);

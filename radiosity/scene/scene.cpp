@@ -25,6 +25,12 @@ int Scene::polygonsWithUvs() const {
   return count;
 }
 
+int Scene::backSideCount() const {
+  int count = 0;
+  for (const ScenePolygon& polygon : polygons) count += polygon.backSideOf >= 0;
+  return count;
+}
+
 void requireEmitter(const Scene& scene) {
   if (scene.emitterCount() > 0 || !scene.lights.empty()) return;
   throw InputError(scene.sourcePath, 0,

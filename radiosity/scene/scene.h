@@ -23,6 +23,9 @@ struct ScenePolygon {
   // Lightmap coordinates when the scene has a set of its own (glTF's TEXCOORD_1); when empty,
   // `uvs` serve for --use-scene-uvs too.
   std::vector<Eigen::Vector2d> lightmapUvs;
+  // For the back side of a two-sided surface (addBackSides, two_sided.h): the polygon it is the
+  // reversed copy of; -1 for a polygon of the scene file.
+  int backSideOf = -1;
 };
 
 // A validated scene: every polygon has >= 3 distinct, in-range vertices and non-zero area,
@@ -41,6 +44,7 @@ struct Scene {
   int emitterCount() const;     // polygons whose material emits
   bool hasSpecular() const;     // any polygon with a mirror or dielectric material
   int polygonsWithUvs() const;  // polygons whose corners all have texture coordinates
+  int backSideCount() const;    // polygons that are the back side of a two-sided surface
 };
 
 // Throws InputError naming the scene file when no polygon emits and the scene has no light

@@ -6,6 +6,7 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/scene/gltf_loader.h"
+#include "radiosity/core/log.h"
 #include "radiosity/scene/obj_loader.h"
 
 namespace rad {
@@ -77,10 +78,14 @@ std::string extensionOf(const std::string& path) {
 
 }  // namespace
 
-Scene loadScene(const std::string& path, const LightInput& lights) {
+Scene loadScene(const std::string& path, const LightInput& lights, const TwoSidedInput& twoSided) {
   Scene scene = loadScene(path);
   // The scene's own lights (glTF's KHR_lights_punctual) come first, then the lights file's.
   for (Light& light : findSceneLights(path, lights)) scene.lights.push_back(std::move(light));
+  applyTwoSidedInput(scene, twoSided);
+  const int backSides = addBackSides(scene);
+  if (backSides > 0)
+    logInfo(std::to_string(backSides) + " two-sided polygons: each side gets its own radiosity");
   return scene;
 }
 

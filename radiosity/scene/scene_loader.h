@@ -3,6 +3,7 @@
 #include <string>
 
 #include "radiosity/scene/scene.h"
+#include "radiosity/scene/two_sided.h"
 
 namespace rad {
 
@@ -18,9 +19,11 @@ namespace rad {
 //   - whatever the format's loader throws for bad content.
 Scene loadScene(const std::string& path);
 
-// The scene with its lights (findSceneLights, lights.h): the one loader of every command that
-// solves or renders.
-Scene loadScene(const std::string& path, const LightInput& lights);
+// The scene with its lights (findSceneLights, lights.h) and its two-sided surfaces (the file's
+// own, e.g. glTF doubleSided, plus `twoSided`), each given its back side (addBackSides): the one
+// loader of every command that solves or renders.
+Scene loadScene(const std::string& path, const LightInput& lights,
+                const TwoSidedInput& twoSided = {});
 
 // Whether the scene file carries lights of its own (glTF's KHR_lights_punctual), which
 // loadScene(path, lights) puts before the lights file's; false for formats without lights.

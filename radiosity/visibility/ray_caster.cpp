@@ -1,10 +1,12 @@
 #include "radiosity/visibility/ray_caster.h"
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
 
 namespace rad {
 namespace {
@@ -29,6 +31,43 @@ RayCaster::RayCaster(const PatchMesh& mesh, const VertexMotion* motion) {
   }
 }
 
+RayCaster::RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMotion* motion) {
+  RAD_CHECK_EQ(mesh.patchCount(), scene.polygons.size());
+  // Both sides of a two-sided surface are seen only from the side they face; a polygon whose
+  // material is two-sided but has no back copy stays opaque from both sides.
+  std::vector<bool> twoSided(scene.polygons.size(), false);
+  for (std::size_t p = 0; p < scene.polygons.size(); ++p)
+    if (scene.polygons[p].backSideOf >= 0)
+      twoSided[p] = twoSided[static_cast<std::size_t>(scene.polygons[p].backSideOf)] = true;
+  for (const Material& m : scene.materials) coverages_.emplace_back(m, scene.textures);
+  bool holesWithoutUvs = false;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const int material = mesh.material(e);
+    bool holes = coverages_[static_cast<std::size_t>(material)].hasHoles();
+    holesWithoutUvs |= holes && !mesh.hasUvs();
+    holes = holes && mesh.hasUvs();
+    if (!twoSided[static_cast<std::size_t>(mesh.patch(e))] && !holes) continue;
+    FilteredElement f;
+    f.element = e;
+    f.frontOnly = twoSided[static_cast<std::size_t>(mesh.patch(e))];
+    f.normal = mesh.normal(e).cast<float>();
+    if (holes) {
+      f.coverage = material;
+      const auto uv = mesh.cornerUvs(e);
+      for (int k = 0; k < 3; ++k) f.uv[k] = uv[k].cast<float>();
+    }
+    filtered_.push_back(f);
+  }
+  if (holesWithoutUvs)
+    logWarning("cut-outs are opaque in this scene: not every polygon has texture coordinates");
+  try {
+    build(mesh, motion);
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
 void RayCaster::build(const PatchMesh& mesh, const VertexMotion* motion) {
   if (motion) {  // one displacement per mesh vertex
     RAD_CHECK_EQ(motion->open.size(), mesh.vertexCount());
@@ -48,12 +87,28 @@ void RayCaster::build(const PatchMesh& mesh, const VertexMotion* motion) {
   // shared edges of a closed mesh.
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+  std::vector<bool> isFiltered(static_cast<std::size_t>(mesh.elementCount()), false);
+  std::vector<int> filtered, plain;
+  for (const FilteredElement& f : filtered_) {
+    isFiltered[static_cast<std::size_t>(f.element)] = true;
+    filtered.push_back(f.element);
+  }
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    if (!isFiltered[static_cast<std::size_t>(e)]) plain.push_back(e);
+  if (!plain.empty()) addGeometry(mesh, motion, 0, plain, false);
+  if (!filtered.empty()) addGeometry(mesh, motion, 1, filtered, true);
+  rtcCommitScene(scene_);
+  check("building the BVH");
+}
+
+void RayCaster::addGeometry(const PatchMesh& mesh, const VertexMotion* motion, unsigned id,
+                            const std::vector<int>& elements, bool filtered) {
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
   const TriMesh& m = mesh.mesh();
   const unsigned steps = motion ? 2 : 1;
   if (motion) rtcSetGeometryTimeStepCount(geometry, steps);
   auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), m.n_faces()));
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), elements.size()));
   bool allocated = indices != nullptr;
   for (unsigned step = 0; step < steps && allocated; ++step) {
     auto* vertices = static_cast<float*>(
@@ -73,15 +128,41 @@ void RayCaster::build(const PatchMesh& mesh, const VertexMotion* motion) {
     check("allocating geometry buffers");
     throw RuntimeFailure("allocating geometry buffers failed");
   }
-  for (int e = 0; e < mesh.elementCount(); ++e) {
-    const auto c = mesh.cornerVertices(e);
-    for (int k = 0; k < 3; ++k) indices[3 * e + k] = static_cast<unsigned>(c[k]);
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const auto c = mesh.cornerVertices(elements[i]);
+    for (int k = 0; k < 3; ++k) indices[3 * i + k] = static_cast<unsigned>(c[k]);
   }
+  if (filtered) {
+    rtcSetGeometryUserData(geometry, this);
+    rtcSetGeometryIntersectFilterFunction(geometry, &RayCaster::filterHits);
+    rtcSetGeometryOccludedFilterFunction(geometry, &RayCaster::filterHits);
+  }
+  elementOf_[id] = elements;
   rtcCommitGeometry(geometry);
-  rtcAttachGeometry(scene_, geometry);
+  rtcAttachGeometryByID(scene_, geometry, id);
   rtcReleaseGeometry(geometry);
-  rtcCommitScene(scene_);
-  check("building the BVH");
+}
+
+void RayCaster::filterHits(const RTCFilterFunctionNArguments* args) {
+  const auto* self = static_cast<const RayCaster*>(args->geometryUserPtr);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1) continue;
+    const Eigen::Vector3f direction(RTCRayN_dir_x(args->ray, args->N, i),
+                                    RTCRayN_dir_y(args->ray, args->N, i),
+                                    RTCRayN_dir_z(args->ray, args->N, i));
+    if (!self->stopsRay(RTCHitN_primID(args->hit, args->N, i), direction,
+                        RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
+      args->valid[i] = 0;
+  }
+}
+
+bool RayCaster::stopsRay(unsigned primitive, const Eigen::Vector3f& direction, float u,
+                         float v) const {
+  const FilteredElement& f = filtered_[primitive];
+  if (f.frontOnly && !(f.normal.dot(direction) < 0)) return false;
+  if (f.coverage < 0) return true;
+  const Eigen::Vector2f uv = (1 - u - v) * f.uv[0] + u * f.uv[1] + v * f.uv[2];
+  return coverages_[static_cast<std::size_t>(f.coverage)].stopsRayAt(uv.cast<double>());
 }
 
 void RayCaster::release() {
@@ -132,7 +213,7 @@ RayHit RayCaster::closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3
   rtcIntersect1(scene_, &context, &rayHit);
   RayHit result;
   if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
-    result.element = static_cast<int>(rayHit.hit.primID);
+    result.element = elementOf(rayHit.hit.geomID, rayHit.hit.primID);
     result.distance = rayHit.ray.tfar;
     result.u = rayHit.hit.u;
     result.v = rayHit.hit.v;
@@ -162,7 +243,7 @@ void RayCaster::closestHits(int count, const float* const origin[3],
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context, &rayHit);
     const bool hit = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-    element[k] = hit ? static_cast<int>(rayHit.hit.primID) : -1;
+    element[k] = hit ? elementOf(rayHit.hit.geomID, rayHit.hit.primID) : -1;
     distance[k] = rayHit.ray.tfar;  // stays infinite on a miss
   }
 }

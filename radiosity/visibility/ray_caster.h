@@ -3,10 +3,13 @@
 #include <embree3/rtcore.h>
 
 #include <Eigen/Core>
+#include <array>
 #include <limits>
 #include <vector>
 
 #include "meshing/patch_mesh.h"
+#include "radiosity/scene/coverage.h"
+#include "radiosity/scene/scene.h"
 
 namespace rad {
 
@@ -26,14 +29,22 @@ struct VertexMotion {
   std::vector<Eigen::Vector3d> open, close;  // one per PatchMesh vertex
 };
 
-// Owns the Embree device and a BVH over the PatchMesh's elements (primitive i = element i).
+// Owns the Embree device and a BVH over the PatchMesh's elements. Two Embree geometries: the
+// opaque one-sided elements, and (only when the scene has any) the elements a ray may pass
+// through, whose hits a filter function checks: the two sides of a two-sided surface (each a
+// one-sided copy, addBackSides) are seen only from the side they face, and a cut-out is seen only
+// where its coverage reaches the cutoff. The plain geometry pays nothing for the filter.
 // The geometry is re-centred on its bounding box before conversion to float, so precision does
 // not depend on where the scene sits in space; callers work in the scene's own coordinates.
 // Thread-safe for queries once constructed. Embree errors become RuntimeFailure exceptions.
 class RayCaster {
  public:
   // With `motion`, the BVH holds two time steps and queries take a shutter time in [0, 1].
+  // Every element opaque and hit from both sides (a mesh without its scene).
   explicit RayCaster(const PatchMesh& mesh, const VertexMotion* motion = nullptr);
+  // The mesh of `scene` (patch p = scene.polygons[p]): two-sided surfaces and cut-outs as the
+  // scene's materials say. `scene` need not outlive the caster.
+  RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMotion* motion = nullptr);
   ~RayCaster();
   RayCaster(const RayCaster&) = delete;
   RayCaster& operator=(const RayCaster&) = delete;
@@ -69,9 +80,27 @@ class RayCaster {
   }
 
  private:
+  // An element a ray may pass through, and why (primitive of the filtered geometry).
+  struct FilteredElement {
+    int element = -1;
+    bool frontOnly = false;  // a side of a two-sided surface: hit only against its normal
+    Eigen::Vector3f normal;  // the element's front normal
+    int coverage = -1;       // index into coverages_, -1 when it has no holes
+    std::array<Eigen::Vector2f, 3> uv;  // texture coordinates at its corners (with coverage)
+  };
+  static void filterHits(const RTCFilterFunctionNArguments* args);
+  bool stopsRay(unsigned primitive, const Eigen::Vector3f& direction, float u, float v) const;
   void check(const char* what) const;
   void build(const PatchMesh& mesh, const VertexMotion* motion);
+  void addGeometry(const PatchMesh& mesh, const VertexMotion* motion, unsigned id,
+                   const std::vector<int>& elements, bool filtered);
+  int elementOf(unsigned geometry, unsigned primitive) const {
+    return elementOf_[geometry][primitive];
+  }
   void release();
+  std::vector<FilteredElement> filtered_;
+  std::vector<CoverageMap> coverages_;
+  std::array<std::vector<int>, 2> elementOf_;  // per geometry: primitive → element
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   Eigen::Vector3d centre_;

@@ -57,7 +57,7 @@ TEST(SceneLimits, CoordinatesBeyondTheLimitAreRejected) {
   Scene scene;
   scene.sourcePath = "far.obj";
   scene.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  scene.polygons.push_back(ScenePolygon{{0, 1, 2}, 0, 3, {}, "", {}});
+  scene.polygons.push_back(ScenePolygon{{0, 1, 2}, 0, 3, {}, "", {}, -1});
   EXPECT_NO_THROW(checkSceneLimits(scene));
   scene.positions[1].x() = 2 * kMaxCoordinate;
   EXPECT_THROW(checkSceneLimits(scene), InputError);
