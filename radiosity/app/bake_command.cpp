@@ -87,10 +87,6 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   // The scene's UVs are checked before the solve, so a bad layout fails in seconds.
   const auto loadStart = std::chrono::steady_clock::now();
   Scene scene = loadScene(o.solve.scenePath, o.solve.lights, o.solve.twoSided);
-  if (o.gather > 0 && !scene.lights.empty())
-    throw InputError("bake --gather " + std::to_string(o.gather) +
-                     " does not sample point, spot, directional or sky lights yet; bake without "
-                     "--gather (the interpolated solution)");
   if (o.sceneUvs) checkLightmapUvs(scene);
   const double loadSeconds = since(loadStart);
   // Whether the charts fit is decided before the solve, on the mesh the solve starts from: a

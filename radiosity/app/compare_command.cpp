@@ -73,7 +73,6 @@ void runCompare(const CLI::App& command, CompareOptions& o) {
   for (const RenderMethod* m : methods) solves = solves || m->needsSolve;
   finishSolveOptions(command, o.solve, o.solverName,
                      solves ? "" : "none of the --methods solves radiosity");
-  for (const RenderMethod* method : methods) requireLightsSampled(o.solve, *method, o.gather);
   std::string source = o.cameraFile;
   std::optional<Camera> sceneCamera;  // a glTF scene's own camera, when there is no sidecar
   if (source.empty()) {

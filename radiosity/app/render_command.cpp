@@ -136,7 +136,6 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   const int spp = o.spp > 0 ? o.spp : method.defaultSpp;
   finishSolveOptions(command, o.solve, o.solverName,
                      radiosity ? "" : "--method " + method.name + " does not solve radiosity");
-  requireLightsSampled(o.solve, method, o.gather);
   std::string cameraSource;
   // Before any long work: a bad camera or motion description fails at once.
   const Camera camera = resolveCamera(o, cameraSource);

@@ -3,9 +3,7 @@
 #include <chrono>
 #include <optional>
 
-#include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
-#include "radiosity/scene/lights.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 
@@ -16,19 +14,6 @@ double since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 }  // namespace
-
-void requireLightsSampled(const SolveOptions& solve, const RenderMethod& method, int gather) {
-  if (method.needsSolve && gather == 0) return;
-  if (findSceneLights(solve.scenePath, solve.lights, /*log=*/false).empty() &&
-      !sceneHasOwnLights(solve.scenePath))
-    return;
-  const std::string what = method.needsSolve
-                               ? "--method " + method.name + " --gather " + std::to_string(gather)
-                               : "--method " + method.name;
-  throw InputError(what +
-                   " does not sample point, spot, directional or sky lights yet; use --method "
-                   "radiosity --gather 0");
-}
 
 RenderWorld::RenderWorld(SolveOptions solve, const std::string& cameraFile, SolutionSource source)
     : solve_(std::move(solve)), source_(std::move(source)) {

@@ -13,11 +13,6 @@
 
 namespace rad {
 
-// Throws InputError when the scene has lights besides emissive polygons (a lights file, its
-// sidecar, --sky, --sun) and `method` with `gather` final-gather rays would render without them:
-// only the interpolated radiosity solution (--method radiosity --gather 0) carries them today.
-void requireLightsSampled(const SolveOptions& solve, const RenderMethod& method, int gather);
-
 // The scene as each render method needs it, built once on first use and shared: the loaded and
 // meshed scene with its BVH (every method), the radiosity solution on its refined mesh (methods
 // that need the solve), and a motion-blur BVH (methods that render motion, when the camera file

@@ -12,18 +12,10 @@
 #include "radiosity/core/rng.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/receiver_points.h"
+#include "radiosity/scene/light_shapes.h"
 
 namespace rad {
 namespace {
-
-// The spot's falloff: 0 outside the outer cone, 1 inside the inner one, smoothstep in cos between
-// (a hard edge when the cones are equal).
-double spotFalloff(const Light& light, double cosAngle) {
-  if (cosAngle < light.cosOuter) return 0;
-  if (cosAngle >= light.cosInner) return 1;
-  const double t = (cosAngle - light.cosOuter) / (light.cosInner - light.cosOuter);
-  return t * t * (3 - 2 * t);
-}
 
 Rgb fromPointLight(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
                    const Eigen::Vector3d& n, uint64_t& raysCast) {
@@ -53,23 +45,19 @@ Rgb fromDirectional(const Light& light, const RayCaster& rays, const Eigen::Vect
     if (rays.occluded(rays.liftOff(x, n, toSun), toSun, inf)) return {};
     return light.irradiance * cosTheta;
   }
-  // Directions uniform in solid angle over the sun's disc, stratified 4 × 4.
-  const double cosHalf = std::cos(0.5 * light.angularDiameterDegrees * M_PI / 180);
-  const Frame frame(toSun);
+  // Directions uniform in solid angle over the sun's disc, stratified 4 × 4: the mean of
+  // L cosθ / (1/Ω) with the disc's radiance L (light_shapes.h).
   Rng rng(key);
   double sum = 0;
   for (int k = 0; k < kSunDiscRays; ++k) {
     const double u1 = (k % 4 + rng.uniform()) / 4, u2 = (k / 4 + rng.uniform()) / 4;
-    const double cosA = 1 - u1 * (1 - cosHalf);
-    const double sinA = std::sqrt(std::max(0.0, 1 - cosA * cosA));
-    const Eigen::Vector3d w =
-        frame.toWorld({sinA * std::cos(2 * M_PI * u2), sinA * std::sin(2 * M_PI * u2), cosA});
+    const Eigen::Vector3d w = sunDirection(light, u1, u2);
     const double cosTheta = n.dot(w);
     if (cosTheta <= 0) continue;
     ++raysCast;
     if (!rays.occluded(rays.liftOff(x, n, w), w, inf)) sum += cosTheta;
   }
-  return light.irradiance * (sum / kSunDiscRays);
+  return sunRadiance(light) * (sunSolidAngle(light) * sum / kSunDiscRays);
 }
 
 Rgb fromSky(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
@@ -81,7 +69,7 @@ Rgb fromSky(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
   for (int k = 0; k < kSkyRays; ++k) {
     const double u1 = (k % 8 + rng.uniform()) / 8, u2 = (k / 8 + rng.uniform()) / 8;
     const Eigen::Vector3d w = frame.toWorld(cosineWeightedDirection(u1, u2));
-    if (w.dot(light.up) <= 0) continue;  // below the horizon: the ground is black
+    if (skyRadiance(light, w).isZero()) continue;  // below the horizon: the ground is black
     ++raysCast;
     open += !rays.occluded(rays.liftOff(x, n, w), w, inf);
   }

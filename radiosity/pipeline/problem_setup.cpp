@@ -26,7 +26,7 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
     // A cut-out element keeps its area; only its covered fraction (rays pass the rest, see
     // RayCaster) emits and reflects, so both scale by its average coverage.
     const CoverageMap& mask = coverage[static_cast<std::size_t>(mesh.material(e))];
-    if (mask.hasHoles() && mesh.hasUvs()) {
+    if (mask.hasHoles() && mesh.hasUvs(e)) {
       const double covered = mask.average(mesh.cornerUvs(e));
       problem.emission[e] = covered * problem.emission[e];
       problem.reflectance[e] = covered * problem.reflectance[e];

@@ -45,12 +45,16 @@ std::string Bdpt::name() const {
 }
 
 void Bdpt::walk(std::vector<Vertex>& path, Eigen::Vector3d origin, Eigen::Vector3d direction,
-                Rgb beta, double pdfDir, bool fromLight, Rng& rng, RayCounts& counts) const {
+                Rgb beta, double pdfDir, bool fromLight, Rng& rng, RayCounts& counts,
+                Escape* escape) const {
   int diffuseBounces = 0, specularRun = 0;
   for (;;) {
     const SurfaceHit hit = scene_.intersect(origin, direction);
     ++(!fromLight && path.size() == 1 ? counts.camera : counts.closest);
-    if (!hit.hit()) return;
+    if (!hit.hit()) {
+      if (escape) *escape = {true, direction, beta, path.size() == 1 || path.back().specular};
+      return;
+    }
     Vertex& prev = path.back();
     Vertex v;
     v.hit = hit;
@@ -130,8 +134,9 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
   thread_local std::vector<Vertex> eye, light;
   thread_local std::string eyeLabels, lightLabels, label;
   const EmitterSampler& lights = scene_.emitters();
+  const SceneLights& sceneLights = scene_.lights();
   Rgb result;
-  if (lights.empty()) return result;
+  if (lights.empty() && sceneLights.empty()) return result;
 
   // Light tracing needs a pinhole: a lens point would be one more sampled vertex.
   const bool lightTracing = splats != nullptr && camera_.lensRadius == 0;
@@ -143,27 +148,31 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
   camera.hit.normal = direction;  // unused: the camera is never a connection end
   camera.label = 'E';
   eye.push_back(camera);
-  walk(eye, origin, direction, Rgb::all(1.0), cameraPdf(direction), false, rng, counts);
+  Escape escape;
+  walk(eye, origin, direction, Rgb::all(1.0), cameraPdf(direction), false, rng, counts, &escape);
 
-  // Light sub-path: y0 is a point on an emitter; the emission is cosine-distributed.
+  // Light sub-path: y0 is a point on an emitter; the emission is cosine-distributed. None
+  // without emissive polygons.
   light.clear();
-  const EmitterSample e = lights.sample(rng.uniform(), rng.uniform(), rng.uniform());
-  Vertex y0;
-  y0.hit.element = e.element;
-  y0.hit.position = e.position;
-  y0.hit.normal = e.normal;
-  y0.hit.front = true;
-  y0.hit.material = &scene_.material(e.element);
-  y0.hit.diffuse = y0.hit.material->diffuse;  // never scattered: y0 only emits
-  y0.beta = e.radiance / e.pdfArea;
-  y0.pdfFwd = e.pdfArea;
-  y0.label = 'L';
-  light.push_back(y0);
-  {
-    const Eigen::Vector3d d = cosineDirection(e.normal, rng.uniform(), rng.uniform());
-    const double pdfDir = e.normal.dot(d) / M_PI;
-    if (pdfDir > 0)  // Le·cos / (pdfArea · cos/π)
-      walk(light, scene_.spawn(y0.hit, d), d, y0.beta * M_PI, pdfDir, true, rng, counts);
+  if (!lights.empty()) {
+    const EmitterSample e = lights.sample(rng.uniform(), rng.uniform(), rng.uniform());
+    Vertex y0;
+    y0.hit.element = e.element;
+    y0.hit.position = e.position;
+    y0.hit.normal = e.normal;
+    y0.hit.front = true;
+    y0.hit.material = &scene_.material(e.element);
+    y0.hit.diffuse = y0.hit.material->diffuse;  // never scattered: y0 only emits
+    y0.beta = e.radiance / e.pdfArea;
+    y0.pdfFwd = e.pdfArea;
+    y0.label = 'L';
+    light.push_back(y0);
+    {
+      const Eigen::Vector3d d = cosineDirection(e.normal, rng.uniform(), rng.uniform());
+      const double pdfDir = e.normal.dot(d) / M_PI;
+      if (pdfDir > 0)  // Le·cos / (pdfArea · cos/π)
+        walk(light, scene_.spawn(y0.hit, d), d, y0.beta * M_PI, pdfDir, true, rng, counts);
+    }
   }
 
   if (binning) {
@@ -197,6 +206,14 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
     }
     if (z.hit.diffuse.maxComponent() == 0) continue;
 
+    // The point, spot, directional and sky lights at z_{t−1}: labelled as a connection (s = 1).
+    if (!sceneLights.empty()) {
+      RandomSampler lightsSampler(rng);
+      add(z.beta * z.hit.diffuse *
+              (sceneLights.sampleIrradiance(scene_, z.hit, lightsSampler, counts, 1) / M_PI),
+          1, t);
+    }
+
     // s ≥ 1: connect y_{s−1} and z_{t−1} by a shadow ray.
     for (int s = 1; s <= lightCount; ++s) {
       const Vertex& y = light[s - 1];
@@ -215,6 +232,15 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
       const double weight = misWeight(light, eye, s, t, pdfAcross, pdfAcross, lightTracing);
       add(y.beta * fy * (z.hit.diffuse / M_PI) * z.beta * (cosY * cosZ / d2 * weight), s, t);
     }
+  }
+
+  // The eye sub-path left the scene: the sky and the sun's disc, as if at one more eye vertex.
+  if (escape.escaped && !sceneLights.empty()) {
+    const Eigen::Vector3d& normal = eye.back().hit.normal;
+    add(escape.beta * (escape.afterDelta
+                           ? sceneLights.escapedRadiance(escape.direction)
+                           : sceneLights.escapedRadiance(escape.direction, normal, 1)),
+        0, eyeCount + 1);
   }
 
   // t = 1: connect y_{s−1} to the camera and splat to the pixel it projects to. Per camera sample

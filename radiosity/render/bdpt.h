@@ -27,6 +27,10 @@ struct BdptOptions {
 // is a delta); the multiple-importance weights count exactly the strategies used in the call:
 // all (s, t) with t ≥ 2, plus t = 1 when light tracing, whose connecting edge has no specular
 // end. Each contribution is one full path with a definite Heckbert label, so it can be binned.
+// The point, spot, directional and sky lights (scene_lights.h) are a separate, additive estimator
+// on the eye sub-path alone, as in the path tracer: next-event estimation at each diffuse eye
+// vertex, and the sky and the sun's disc where the eye sub-path leaves the scene, MIS-weighted
+// between the two; they start no light sub-paths (so light tracing does not see them either).
 class Bdpt : public PathIntegrator {
  public:
   // `camera`: the camera the images are rendered from; light tracing needs it (pinhole only).
@@ -46,10 +50,19 @@ class Bdpt : public PathIntegrator {
   };
 
  private:
+  // Where an eye sub-path left the scene: the ray the sky and the sun's disc are seen along.
+  struct Escape {
+    bool escaped = false;
+    Eigen::Vector3d direction;
+    Rgb beta;                // throughput along that ray
+    bool afterDelta = true;  // from the camera, a mirror or glass: no light sample took a share
+  };
   // Extends `path` from its last vertex along `direction`; `pdfDir` is the solid-angle density
-  // of that direction (unused after a specular vertex).
+  // of that direction (unused after a specular vertex). `escape` (eye sub-paths): set when the
+  // walk ends by leaving the scene.
   void walk(std::vector<Vertex>& path, Eigen::Vector3d origin, Eigen::Vector3d direction, Rgb beta,
-            double pdfDir, bool fromLight, Rng& rng, RayCounts& counts) const;
+            double pdfDir, bool fromLight, Rng& rng, RayCounts& counts,
+            Escape* escape = nullptr) const;
   double misWeight(const std::vector<Vertex>& light, const std::vector<Vertex>& eye, int s, int t,
                    double lightEndRev, double eyeEndRev, bool lightTracing) const;
   // Solid-angle density, per camera sample over the whole image, of the camera ray along the

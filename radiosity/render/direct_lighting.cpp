@@ -11,7 +11,8 @@ Rgb DirectLighting::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3
                              RayCounts& counts) const {
   const SurfaceHit hit = scene_.intersect(origin, direction);
   ++counts.camera;
-  if (!hit.hit() || !hit.front) return {};
+  if (!hit.hit()) return scene_.lights().escapedRadiance(direction);  // the sky
+  if (!hit.front) return {};
   const Material& m = *hit.material;
   Rgb result = m.emission;
   if (hit.diffuse.maxComponent() == 0) return result;
@@ -19,6 +20,7 @@ Rgb DirectLighting::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3
   Rgb irradiance;
   for (const PointLight& light : lights_)
     if (light.patch != patch) irradiance += light.irradiance(hit.position, hit.normal);
+  irradiance += scene_.lights().unshadowedIrradiance(hit.position, hit.normal);
   return result + hit.diffuse * irradiance * (1.0 / M_PI);
 }
 

@@ -1,6 +1,7 @@
 #include "radiosity/render/distribution_ray_tracer.h"
 
 #include <cmath>
+#include <vector>
 
 #include "radiosity/core/log.h"
 #include "radiosity/render/glossy_lobe.h"
@@ -36,7 +37,11 @@ Rgb DistributionRayTracer::radiance(const Eigen::Vector3d& startOrigin,
   for (int depth = 0;; ++depth) {
     const SurfaceHit hit = scene_.intersect(origin, direction, time);
     ++(depth == 0 ? counts.camera : counts.closest);
-    if (!hit.hit() || depth > options_.maxDepth) break;
+    if (!hit.hit()) {  // the sky and the sun's disc, which only the diffuse part samples below
+      result += throughput * scene_.lights().escapedRadiance(direction);
+      break;
+    }
+    if (depth > options_.maxDepth) break;
     const Material& m = *hit.material;
 
     if (m.isSpecular()) {
@@ -80,6 +85,26 @@ Rgb DistributionRayTracer::radiance(const Eigen::Vector3d& startOrigin,
           result += throughput * f * s.radiance * (cosX / lightPdf);
         }
       }
+    }
+
+    // The point, spot and directional lights and the sky (scene_lights.h): the delta lights
+    // through both lobes (no scattered ray can find them), the sun's disc and the sky for the
+    // diffuse part only, which has no other strategy (the glossy lobe's rays see them).
+    const SceneLights& sceneLights = scene_.lights();
+    if (!sceneLights.empty()) {
+      thread_local std::vector<SceneLights::Arrival> arrivals;
+      sceneLights.deltaArrivals(scene_, hit, counts, time, arrivals);
+      for (const SceneLights::Arrival& a : arrivals) {
+        Rgb f = hit.diffuse * (1.0 / M_PI);
+        if (isGlossy) f += glossy.brdf(a.direction, mirror);
+        result += throughput * f * a.irradiance;
+      }
+      if (hit.diffuse.maxComponent() > 0)
+        for (int k = 0; k < sceneLights.areaCount(); ++k)
+          result += throughput * hit.diffuse *
+                    (sceneLights.sampleArea(k, scene_, hit, {rng.uniform(), rng.uniform()}, counts,
+                                            0, time) /
+                     M_PI);
     }
 
     if (!isGlossy) break;  // a diffuse surface ends the path: no diffuse interreflection

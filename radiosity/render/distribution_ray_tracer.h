@@ -22,6 +22,8 @@ struct DistributionOptions {
 //  - depth of field comes from the thin-lens camera (lens_radius, focus_distance), sampled by
 //    the image renderer; motion blur from a shutter time τ drawn uniformly in [0, 1) per camera
 //    sample and carried by every ray of that sample through the motion-blur BVH.
+// The point, spot and directional lights and the sky light every diffuse surface by one shadow
+// ray each (the glossy lobe too for the delta lights); rays that leave the scene see the sky.
 // Diffuse surfaces end the path (no diffuse interreflection): paths `L D? S* E`, where S
 // includes the glossy lobes.
 class DistributionRayTracer : public Integrator {

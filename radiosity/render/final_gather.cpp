@@ -140,7 +140,20 @@ Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts&
   Rgb sum;
   const double gathersPerLight = double(options_.gatherRays) / n;
   for (int k = 0; k < n; ++k) sum += lightSample(hit, points[k], counts, gathersPerLight);
-  return sum / n;  // irradiance / π: times ρ it is the reflected radiance
+  sum = sum / n;
+  // The point, spot, directional and sky lights: the delta ones once (exact), the sun's disc and
+  // the sky by n samples each, stratified, in the same MIS pair with the gather rays.
+  const SceneLights& lights = scene_.lights();
+  if (lights.empty()) return sum;  // irradiance / π: times ρ it is the reflected radiance
+  Rgb fromLights = lights.deltaIrradiance(scene_, hit, counts);
+  for (int a = 0; a < lights.areaCount(); ++a) {
+    sampler.get2DArray(n, points);
+    Rgb area;
+    for (int k = 0; k < n; ++k)
+      area += lights.sampleArea(a, scene_, hit, points[k], counts, gathersPerLight);
+    fromLights += area / n;
+  }
+  return sum + fromLights / M_PI;
 }
 
 Rgb FinalGather::gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts) const {
@@ -165,7 +178,14 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
   for (int depth = 0;; ++depth) {
     const SurfaceHit hit = scene_.intersect(origin, direction);
     ++counts.closest;
-    if (!hit.hit()) return {};
+    if (!hit.hit()) {
+      // Out of the scene: the sky and the sun, less the share the light samples at `from` took
+      // (counted as the emitters' are); through mirrors and glass, all of it.
+      const double gathersPerLight = mayContinue ? double(options_.gatherRays) / lightRays() : 1.0;
+      return weight * (viaSpecular ? scene_.lights().escapedRadiance(direction)
+                                   : scene_.lights().escapedRadiance(direction, from.normal,
+                                                                     gathersPerLight));
+    }
     if (hit.material->isSpecular()) {
       if (depth >= options_.maxSpecularDepth ||
           !continueSpecular(scene_, hit, origin, direction, weight, [&] { return rng.uniform(); }))
@@ -194,9 +214,12 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
       // least like the light at this very point: gather once more from the point, one shadow
       // ray and one cosine ray (read from the solution), weighed by MIS as at the eye hit.
       const Point2 light{rng.uniform(), rng.uniform()}, bounce{rng.uniform(), rng.uniform()};
-      const Rgb incoming = lightSample(hit, light, counts) +
-                           secondaryRadiance(hit, cosineDirection(hit.normal, bounce.x, bounce.y),
-                                             rng, counts, false);
+      RandomSampler lightsSampler(rng);
+      const Rgb incoming =
+          lightSample(hit, light, counts) +
+          scene_.lights().sampleIrradiance(scene_, hit, lightsSampler, counts, 1) / M_PI +
+          secondaryRadiance(hit, cosineDirection(hit.normal, bounce.x, bounce.y), rng, counts,
+                            false);
       return weight * (value + rho * incoming);
     }
     // Otherwise the solution's reflected part, (B − E)/π of the element, with its mean shadow-ray
@@ -249,7 +272,7 @@ Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vecto
   for (int depth = 0;; ++depth) {
     const SurfaceHit hit = scene_.intersect(origin, direction);
     ++(depth == 0 ? counts.camera : counts.closest);
-    if (!hit.hit()) return {};
+    if (!hit.hit()) return weight * scene_.lights().escapedRadiance(direction);  // the sky
     const Material& m = *hit.material;
     if (m.isSpecular()) {
       if (depth >= options_.maxSpecularDepth ||

@@ -21,10 +21,12 @@ Rgb PathTracer::trace(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d&
                       Sampler& sampler, RayCounts& counts, const PathBinning* binning, Rgb* binned,
                       SplatImage* /*splats*/) const {
   const EmitterSampler& lights = scene_.emitters();
+  const SceneLights& sceneLights = scene_.lights();
   Eigen::Vector3d origin = startOrigin, direction = startDirection;
   Rgb result, throughput = Rgb::all(1.0);
-  bool specularBefore = true;  // the camera (or a mirror) cannot sample emitters itself
-  double bsdfPdf = 0;          // solid-angle density of the last diffuse bounce
+  bool specularBefore = true;    // the camera (or a mirror) cannot sample emitters itself
+  double bsdfPdf = 0;            // solid-angle density of the last diffuse bounce
+  Eigen::Vector3d bounceNormal;  // the normal at the last diffuse bounce
   int diffuseBounces = 0, specularRun = 0;
   bool first = true;
   // With a binning: the eye path's vertex labels so far (eye to light) and a scratch label.
@@ -41,7 +43,14 @@ Rgb PathTracer::trace(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d&
     const SurfaceHit hit = scene_.intersect(origin, direction);
     ++(first ? counts.camera : counts.closest);
     first = false;
-    if (!hit.hit()) break;
+    if (!hit.hit()) {
+      // Out of the scene: the sky and the sun, of which NEE took its share after a diffuse bounce.
+      if (!sceneLights.empty())
+        add(throughput * (specularBefore ? sceneLights.escapedRadiance(direction)
+                                         : sceneLights.escapedRadiance(direction, bounceNormal, 1)),
+            {});
+      break;
+    }
     const Material& m = *hit.material;
 
     if (m.isSpecular()) {
@@ -89,11 +98,18 @@ Rgb PathTracer::trace(const Eigen::Vector3d& startOrigin, const Eigen::Vector3d&
       }
     }
 
+    // Next-event estimation to the point, spot, directional and sky lights (scene_lights.h).
+    if (!sceneLights.empty())
+      add(throughput * rho *
+              (sceneLights.sampleIrradiance(scene_, hit, sampler, counts, 1) * (1.0 / M_PI)),
+          {});
+
     // Cosine-weighted bounce: f·cos/pdf = ρ.
     const Point2 bounce = sampler.get2D();
     direction = cosineDirection(hit.normal, bounce.x, bounce.y);
     bsdfPdf = hit.normal.dot(direction) / M_PI;
     if (!(bsdfPdf > 0)) break;
+    bounceNormal = hit.normal;
     origin = scene_.spawn(hit, direction);
     throughput = throughput * rho;
     specularBefore = false;

@@ -13,6 +13,9 @@ struct PathTracerOptions {
 // roulette on the path throughput, no clamping and no depth limit. Same scene, materials and
 // BVH as the radiosity pass: one-sided Lambertian surfaces and emitters (a back face is black),
 // mirrors reflecting Ks, dielectrics with Fresnel (Ni) and transmittance Tf.
+// The point, spot, directional and sky lights are sampled at every diffuse vertex too (one
+// shadow ray each, scene_lights.h); a bounce that leaves the scene sees the sky and the sun's
+// disc, MIS-weighted against those samples, and a camera or specular ray sees them whole.
 // Each contribution's label is the eye path's vertices (D or S) ending at the emitter: L(D|S)*E.
 class PathTracer : public PathIntegrator {
  public:

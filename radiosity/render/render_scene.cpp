@@ -8,7 +8,12 @@ namespace rad {
 
 RenderScene::RenderScene(const Scene& scene, const PatchMesh& mesh, const RayCaster& caster,
                          const SceneMotion* motion)
-    : scene_(scene), mesh_(mesh), caster_(caster), motion_(motion), emitters_(scene, mesh) {
+    : scene_(scene),
+      mesh_(mesh),
+      caster_(caster),
+      motion_(motion),
+      emitters_(scene, mesh),
+      lights_(scene.lights) {
   const int n = mesh.elementCount();
   corners_.resize(n);
   normals_.resize(n);
@@ -48,6 +53,11 @@ bool RenderScene::occluded(const Eigen::Vector3d& from, const Eigen::Vector3d& t
   if (!(length > 2 * caster_.surfaceOffset())) return false;
   d /= length;
   return caster_.occluded(from, d, length - 2 * caster_.surfaceOffset(), time);
+}
+
+bool RenderScene::occludedAlong(const Eigen::Vector3d& from, const Eigen::Vector3d& direction,
+                                double time) const {
+  return caster_.occluded(from, direction, std::numeric_limits<double>::infinity(), time);
 }
 
 }  // namespace rad

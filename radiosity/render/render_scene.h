@@ -7,6 +7,7 @@
 #include "meshing/patch_mesh.h"
 #include "radiosity/core/rgb.h"
 #include "radiosity/render/emitter_sampler.h"
+#include "radiosity/render/scene_lights.h"
 #include "radiosity/render/scene_motion.h"
 #include "radiosity/scene/scene.h"
 #include "radiosity/visibility/ray_caster.h"
@@ -55,6 +56,10 @@ class RenderScene {
   // True when the segment from `from` (already lifted off its surface) to `to` (a point on a
   // surface) is blocked. Stops short of `to` by the caster's surface offset.
   bool occluded(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double time = 0) const;
+  // True when the ray from `from` (already lifted off its surface) along the unit `direction`
+  // hits anything: a light at infinity (the sun, the sky) is blocked that way.
+  bool occludedAlong(const Eigen::Vector3d& from, const Eigen::Vector3d& direction,
+                     double time = 0) const;
   // A ray origin on `hit` lifted off the surface to the side `direction` leaves towards.
   Eigen::Vector3d spawn(const SurfaceHit& hit, const Eigen::Vector3d& direction) const {
     return caster_.liftOff(hit.position, hit.normal, direction);
@@ -64,6 +69,8 @@ class RenderScene {
   const PatchMesh& mesh() const { return mesh_; }
   const Material& material(int element) const { return scene_.materials[mesh_.material(element)]; }
   const EmitterSampler& emitters() const { return emitters_; }
+  // The point, spot, directional and sky lights (besides the emissive polygons).
+  const SceneLights& lights() const { return lights_; }
   bool hasSpecular() const { return hasSpecular_; }
   bool hasMotion() const { return motion_ != nullptr; }
 
@@ -73,6 +80,7 @@ class RenderScene {
   const RayCaster& caster_;
   const SceneMotion* motion_;
   EmitterSampler emitters_;
+  SceneLights lights_;
   std::vector<std::array<Eigen::Vector3d, 3>> corners_;
   std::vector<Eigen::Vector3d> normals_;
   bool hasSpecular_ = false;

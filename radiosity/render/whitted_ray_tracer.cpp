@@ -11,15 +11,15 @@ WhittedRayTracer::WhittedRayTracer(const RenderScene& scene, WhittedOptions opti
     : scene_(scene), options_(options), lights_(emitterPointLights(scene)) {}
 
 Rgb WhittedRayTracer::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                               Rng&, RayCounts& counts) const {
+                               Rng& rng, RayCounts& counts) const {
   ++counts.camera;
-  return trace(origin, direction, 0, 1.0, counts);
+  return trace(origin, direction, 0, 1.0, rng, counts);
 }
 
 Rgb WhittedRayTracer::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                            int depth, double weight, RayCounts& counts) const {
+                            int depth, double weight, Rng& rng, RayCounts& counts) const {
   const SurfaceHit hit = scene_.intersect(origin, direction);
-  if (!hit.hit()) return {};
+  if (!hit.hit()) return scene_.lights().escapedRadiance(direction);
   const Material& m = *hit.material;
 
   if (m.kind == SurfaceKind::Mirror) {
@@ -28,7 +28,7 @@ Rgb WhittedRayTracer::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d
     const double w = weight * m.specular.maxComponent();
     if (w < options_.minWeight) return {};
     ++counts.closest;
-    return m.specular * trace(scene_.spawn(hit, d), d, depth + 1, w, counts);
+    return m.specular * trace(scene_.spawn(hit, d), d, depth + 1, w, rng, counts);
   }
   if (m.kind == SurfaceKind::Dielectric) {
     if (depth >= options_.maxDepth) return {};
@@ -42,7 +42,7 @@ Rgb WhittedRayTracer::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d
     if (weight * f >= options_.minWeight) {
       const Eigen::Vector3d d = reflect(direction, n);
       ++counts.closest;
-      result += f * trace(scene_.spawn(hit, d), d, depth + 1, weight * f, counts);
+      result += f * trace(scene_.spawn(hit, d), d, depth + 1, weight * f, rng, counts);
     }
     const double eta = etaI / etaT;
     const Rgb t = m.transmittance * ((1 - f) * eta * eta);
@@ -50,7 +50,8 @@ Rgb WhittedRayTracer::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d
       const double cosT = std::sqrt(std::max(0.0, 1 - eta * eta * (1 - cosI * cosI)));
       const Eigen::Vector3d d = (eta * direction + (eta * cosI - cosT) * n).normalized();
       ++counts.closest;
-      result += t * trace(scene_.spawn(hit, d), d, depth + 1, weight * t.maxComponent(), counts);
+      result +=
+          t * trace(scene_.spawn(hit, d), d, depth + 1, weight * t.maxComponent(), rng, counts);
     }
     return result;
   }
@@ -67,6 +68,10 @@ Rgb WhittedRayTracer::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d
     ++counts.shadow;
     const Eigen::Vector3d w = (light.position - hit.position).normalized();
     if (!scene_.occluded(scene_.spawn(hit, w), light.position)) irradiance += e;
+  }
+  if (!scene_.lights().empty()) {
+    RandomSampler sampler(rng);  // no scattered rays to weigh against: the samples take it all
+    irradiance += scene_.lights().sampleIrradiance(scene_, hit, sampler, counts, 0);
   }
   return result + hit.diffuse * irradiance * (1.0 / M_PI);
 }

@@ -17,7 +17,10 @@ struct WhittedOptions {
 // (glass casts a shadow like any surface); mirrors reflect Ks times the mirrored view;
 // glass splits deterministically into Fresnel reflection (weight F) and refraction (weight
 // (1−F)·Tf·(η_i/η_t)²), both traced recursively, up to maxDepth specular interactions.
-// No diffuse interreflection, no Monte Carlo: draws no random numbers.
+// The point, spot and hard directional lights light a diffuse surface exactly, each behind one
+// shadow ray; the sun's disc and the sky by one sampled direction each (the only random numbers
+// drawn, so a scene without them renders deterministically); rays that leave the scene see the
+// sky (scene_lights.h). No diffuse interreflection.
 class WhittedRayTracer : public Integrator {
  public:
   explicit WhittedRayTracer(const RenderScene& scene, WhittedOptions options = {});
@@ -27,7 +30,7 @@ class WhittedRayTracer : public Integrator {
 
  private:
   Rgb trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, int depth,
-            double weight, RayCounts& counts) const;
+            double weight, Rng& rng, RayCounts& counts) const;
   const RenderScene& scene_;
   WhittedOptions options_;
   std::vector<PointLight> lights_;

@@ -1,0 +1,50 @@
+#include "radiosity/scene/light_shapes.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rad {
+
+double spotFalloff(const Light& light, double cosAngle) {
+  if (cosAngle < light.cosOuter) return 0;
+  if (cosAngle >= light.cosInner) return 1;
+  const double t = (cosAngle - light.cosOuter) / (light.cosInner - light.cosOuter);
+  return t * t * (3 - 2 * t);
+}
+
+double sunCosHalfAngle(const Light& light) {
+  return std::cos(0.5 * light.angularDiameterDegrees * M_PI / 180);
+}
+
+double sunSolidAngle(const Light& light) { return 2 * M_PI * (1 - sunCosHalfAngle(light)); }
+
+Rgb sunRadiance(const Light& light) {
+  const double c = sunCosHalfAngle(light);
+  const double sin2 = (1 - c) * (1 + c);  // sin²h without the cancellation of 1 − c²
+  return sin2 > 0 ? light.irradiance / (M_PI * sin2) : Rgb();
+}
+
+Eigen::Vector3d sunDirection(const Light& light, double u1, double u2) {
+  const Eigen::Vector3d axis = -light.direction;
+  if (light.angularDiameterDegrees <= 0) return axis;
+  // Orthonormal basis around the axis (Duff et al., JCGT 2017).
+  const double sign = std::copysign(1.0, axis.z());
+  const double a = -1.0 / (sign + axis.z()), b = axis.x() * axis.y() * a;
+  const Eigen::Vector3d t(1 + sign * axis.x() * axis.x() * a, sign * b, -sign * axis.x());
+  const Eigen::Vector3d s(b, sign + axis.y() * axis.y() * a, -axis.y());
+  const double cosA = 1 - u1 * (1 - sunCosHalfAngle(light));
+  const double sinA = std::sqrt(std::max(0.0, 1 - cosA * cosA));
+  const double phi = 2 * M_PI * u2;
+  return (sinA * std::cos(phi) * t + sinA * std::sin(phi) * s + cosA * axis).normalized();
+}
+
+bool insideSunDisc(const Light& light, const Eigen::Vector3d& direction) {
+  return light.angularDiameterDegrees > 0 &&
+         direction.dot(-light.direction) >= sunCosHalfAngle(light);
+}
+
+Rgb skyRadiance(const Light& light, const Eigen::Vector3d& direction) {
+  return direction.dot(light.up) > 0 ? light.radiance : Rgb();
+}
+
+}  // namespace rad

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include "radiosity/core/rgb.h"
+#include "radiosity/scene/lights.h"
+
+namespace rad {
+
+// How the lights of lights.h spread their light over directions: the one definition that the
+// radiosity first shot (pipeline/direct_light_stage) and the camera renders (render/scene_lights)
+// both use, so every method sees the same spot, sun and sky.
+
+// The spot's falloff: 0 outside the outer cone, 1 inside the inner one, smoothstep in cos between
+// (a hard edge when the cones are equal). `cosAngle`: cosine between the axis and the direction
+// from the light to the lit point.
+double spotFalloff(const Light& light, double cosAngle);
+
+// The sun's disc, for a directional light with an angular diameter: a cone of half-angle h around
+// the direction towards the sun, of uniform radiance L = E / (π sin²h), so that a surface facing
+// the sun receives ∫ L cosα dω = L π sin²h = E (its `irradiance`).
+double sunCosHalfAngle(const Light& light);  // cos h; 1 for a hard sun
+double sunSolidAngle(const Light& light);    // 2π (1 − cos h); 0 for a hard sun
+Rgb sunRadiance(const Light& light);         // L = E / (π sin²h)
+// A direction towards the sun uniform in solid angle over its disc (density 1/sunSolidAngle)
+// from a point (u1, u2) of the unit square; the disc's centre for a hard sun.
+Eigen::Vector3d sunDirection(const Light& light, double u1, double u2);
+// Whether the unit `direction` (from a surface towards the sky) lies within the sun's disc.
+bool insideSunDisc(const Light& light, const Eigen::Vector3d& direction);
+
+// The sky's radiance along the unit `direction` (from a surface towards the sky): its radiance
+// above the horizon of `up`, black ground below.
+Rgb skyRadiance(const Light& light, const Eigen::Vector3d& direction);
+
+}  // namespace rad
