@@ -3,6 +3,9 @@
 #include <Eigen/Geometry>
 #include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
 #include <stdexcept>
 
 #include "meshing/polygon_triangulation.h"
@@ -195,6 +198,7 @@ void PatchMesh::splitEdge(TriMesh::EdgeHandle e) {
   // was cut from, so every face around the new vertex is a child one level below its parent.
   mesh_.split_copy(e, mid);
   for (auto f : mesh_.vf_range(mid)) {
+    touched_.push_back(f.idx());
     mesh_.property(level_, f) += 1;
     updateArea(f);
     if (hasUvs(f.idx())) splitUvs(f, from, to, mid.idx());
@@ -248,6 +252,7 @@ void PatchMesh::refineAcross(TriMesh::FaceHandle f, int depth) {
 
 int PatchMesh::bisect(int element) {
   const int before = elementCount();
+  touched_.clear();
   refineAcross(face(element), 0);
   return elementCount() - before;
 }
@@ -264,6 +269,31 @@ void PatchMesh::subdivideUniform(double maxArea) {
       }
     }
   }
+}
+
+void PatchMesh::subdivideToCount(int count) {
+  // Largest first, from a heap whose stale entries (an element split since it was pushed) are
+  // recognised by their area no longer matching.
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry> largest;
+  for (int e = 0; e < elementCount(); ++e) largest.push({area(e), e});
+  while (elementCount() < count && !largest.empty()) {
+    const auto [a, e] = largest.top();
+    largest.pop();
+    if (a != area(e)) continue;
+    bisect(e);
+    for (int f : touched_) largest.push({area(f), f});
+  }
+}
+
+double PatchMesh::longestEdgeLength(int element) const {
+  return std::sqrt(mesh_.calc_edge_sqr_length(longestEdge(face(element))));
+}
+
+double PatchMesh::aspectRatio(int element) const {
+  const double longest = longestEdgeLength(element);
+  const double a = area(element);
+  return a > 0 ? longest * longest / (2 * a) : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace rad

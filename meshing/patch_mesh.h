@@ -86,9 +86,26 @@ class PatchMesh {
   // Splits elements by longest-edge bisection until none is larger than maxArea. Conforming:
   // a split edge splits both faces beside it (Rivara's LEPP keeps the triangles well shaped).
   void subdivideUniform(double maxArea);
+  // Splits the largest element (by bisection, as above) until there are at least `count`
+  // elements: the requested count is met (one split adds one to three elements) and the sizes
+  // stay within about a factor 2 of each other wherever the input allows.
+  void subdivideToCount(int count);
   // Bisects one element (and neighbours as needed to stay conforming). Returns the number of
   // elements added.
   int bisect(int element);
+
+  // Shape of an element: its longest edge over the altitude onto that edge (2/√3 ≈ 1.15 for an
+  // equilateral triangle, 2 for the halves of a square; a sliver's is large).
+  double aspectRatio(int element) const;
+  // Splits slivers into well-shaped elements (sliver_splitting.cpp): elements whose aspectRatio
+  // exceeds maxAspect and whose longest edge is above minEdge have their longest edge on the
+  // patch's outline split at its midpoint, then edges inside a patch are flipped to the
+  // Delaunay triangulation, in rounds until none is left. Conforming throughout. Longest-edge
+  // bisection alone keeps a sliver's shape at every level; the flips are what turn a long strip
+  // into short, well-shaped pieces. A corner of an input polygon sharper than the bound, a strip
+  // narrower than minEdge, and a sliver with no outline edge about as long as its longest edge
+  // are left so.
+  void splitSlivers(double maxAspect, double minEdge);
 
   const TriMesh& mesh() const { return mesh_; }
   static TriMesh::FaceHandle face(int element) { return TriMesh::FaceHandle(element); }
@@ -108,6 +125,14 @@ class PatchMesh {
   void splitEdge(TriMesh::EdgeHandle e);
   void splitUvs(TriMesh::FaceHandle f, int from, int to, int mid);
   void updateArea(TriMesh::FaceHandle f);
+  // Lawson flips inside each planar patch until every such edge is locally Delaunay.
+  int flipToDelaunay();
+  bool shouldFlip(TriMesh::EdgeHandle e) const;
+  void flipEdge(TriMesh::EdgeHandle e);
+  double longestEdgeLength(int element) const;
+  // An edge on the patch's outline: a mesh boundary, a border between patches or a crease.
+  bool isPatchBorder(TriMesh::EdgeHandle e) const;
+  bool splitSliver(int element);  // false when it has no outline edge long enough to split
 
   TriMesh mesh_;
   OpenMesh::FPropHandleT<int> patchId_, materialId_, level_, shooterId_;
@@ -118,6 +143,8 @@ class PatchMesh {
   bool anyUvs_ = false, allUvs_ = false;
   int patchCount_ = 0;
   int inputTriangles_ = 0;
+  // Faces whose shape changed in the last splitEdge/flipEdge calls (cleared by their callers).
+  std::vector<int> touched_;
   Eigen::Vector3d boundsMin_, boundsMax_;
 };
 

@@ -58,12 +58,18 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
       ->check(CLI::IsMember({"progressive", "southwell", "gauss-seidel", "jacobi"}));
   command.add_option("--rays", options.raysPerElement, "Hemisphere rays per element")
       ->default_val(options.raysPerElement);
+  command
+      .add_option("--element-size", options.elementSize,
+                  "Element size S in scene units: no element larger than the equilateral "
+                  "triangle of edge S (default: from the scene's extent and area, see "
+                  "docs/options.md)")
+      ->check(CLI::PositiveNumber);
   command.add_option("--max-area", options.maxArea,
-                     "Largest element area in scene units² (default: total area / --elements)");
+                     "Largest element area in scene units² (instead of --element-size)");
   command
       .add_option("--elements", options.targetElements,
-                  "Approximate element count when --max-area is not given")
-      ->default_val(options.targetElements)
+                  "Element count, met within 20% by splitting the largest elements first "
+                  "(instead of --element-size)")
       ->check(CLI::PositiveNumber);
   command.add_option("--seed", options.seed, "Random seed")->default_val(options.seed);
   command.add_option("--threads", options.threads, "Worker threads (0: all cores)")
@@ -120,10 +126,11 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
 namespace {
 // The options of addSolveOptions that only the radiosity solve reads.
 const char* const kSolveOnlyOptions[] = {
-    "--solver",       "--rays",           "--max-area",         "--elements",
-    "--tolerance",    "--max-iterations", "--bounces",          "--form-factors",
-    "--patch-area",   "--shadow-rays",    "--refine-threshold", "--min-area",
-    "--max-elements", "--refine-passes",  "--time-limit",       "--receiver-points"};
+    "--solver",         "--rays",         "--max-area",       "--elements",
+    "--element-size",   "--tolerance",    "--max-iterations", "--bounces",
+    "--form-factors",   "--patch-area",   "--shadow-rays",    "--refine-threshold",
+    "--min-area",       "--max-elements", "--refine-passes",  "--time-limit",
+    "--receiver-points"};
 }  // namespace
 
 std::set<std::string> givenOptions(const CLI::App& command) {

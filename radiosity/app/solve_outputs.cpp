@@ -65,6 +65,8 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
         {"skipped_degenerate_faces", s.scene.skippedDegenerateFaces},
         {"total_area", mesh.totalArea()},
         {"max_element_area", r.maxArea},
+        {"element_size", r.elementSize},
+        {"element_size_rule", r.elementSizeRule},
         {"elements_before_refinement", r.elementsBeforeRefinement},
         {"refinement_passes", r.refinementPasses}}},
       {"form_factors",

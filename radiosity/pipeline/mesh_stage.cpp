@@ -7,6 +7,7 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
+#include "radiosity/pipeline/element_size.h"
 #include "radiosity/pipeline/resource_limits.h"
 #include "radiosity/scene/scene_mesh.h"
 
@@ -27,6 +28,24 @@ void checkPatchAreas(const PatchMesh& mesh, const Scene& scene) {
                            " (a self-intersecting or degenerate polygon?)");
 }
 
+// Analytic factors cost every element a shadow-ray set per shooting patch, and every input
+// polygon is at least one patch: on a scene of tens of thousands of polygons the worst case is
+// hours. Refused before the form factors start, with the estimate.
+void checkAnalyticCost(const PatchMesh& mesh, const SolveOptions& options) {
+  const double rays = static_cast<double>(mesh.elementCount()) * mesh.shooterCount() *
+                      options.receiverPoints * options.shadowRays;
+  if (rays <= kMaxAnalyticShadowRays) return;
+  throw InputError(
+      "--form-factors analytic is impractical here: " + std::to_string(mesh.elementCount()) +
+      " elements × " + std::to_string(mesh.shooterCount()) +
+      " shooting patches (every input polygon is at least one) × " +
+      std::to_string(options.receiverPoints) + " receiver points × " +
+      std::to_string(options.shadowRays) + " shadow rays is up to " + formatNumber(rays) +
+      " shadow rays, about " + formatNumber(rays / kAssumedShadowRaysPerSecond / 3600) +
+      " hours at 10 million rays per second (limit " + formatNumber(kMaxAnalyticShadowRays) +
+      "); use --form-factors hemisphere");
+}
+
 }  // namespace
 
 MeshedScene meshScene(const Scene& scene, const SolveOptions& options) {
@@ -39,31 +58,45 @@ MeshedScene meshScene(const Scene& scene, const SolveOptions& options) {
     throw InputError(
         scene.sourcePath, 0,
         "the polygons triangulate to no area (self-intersecting or degenerate faces?)");
-  out.maxArea = options.maxArea > 0 ? options.maxArea : totalArea / options.targetElements;
-  // Bisection gives at most about 2·totalArea/maxArea elements.
-  if (totalArea / out.maxArea > kMaxElements)
-    throw InputError("about " + formatNumber(totalArea / out.maxArea) +
-                     " elements requested (limit " + formatNumber(kMaxElements) +
-                     "): raise --max-area or lower --elements");
+  out.sizing = decideElementSize(options, totalArea, mesh.boundsDiagonal());
+  const ElementSizing& sizing = out.sizing;
+  out.maxArea = sizing.maxArea;
+  // Bisection to an area bound gives at most about 2·totalArea/maxArea elements.
+  const double expectedElements =
+      sizing.targetCount > 0 ? sizing.targetCount : totalArea / sizing.maxArea;
+  if (expectedElements > kMaxElements)
+    throw InputError("about " + formatNumber(expectedElements) + " elements requested (limit " +
+                     formatNumber(kMaxElements) +
+                     "): raise --element-size or --max-area, or lower --elements");
+  const double elementArea = equilateralArea(sizing.edge);
   const bool analytic = options.formFactors == FormFactorMethod::Analytic;
-  const double patchArea = options.patchArea > 0 ? options.patchArea : 8 * out.maxArea;
+  const double patchArea = options.patchArea > 0 ? options.patchArea : 8 * elementArea;
   {
     // The worst case of the form-factor rows must fit in memory.
-    const double elements = std::ceil(totalArea / out.maxArea);
+    const double elements = std::max(std::ceil(totalArea / elementArea),
+                                     static_cast<double>(mesh.inputTriangleCount()));
     const double patches = analytic ? std::ceil(totalArea / patchArea) : elements;
     checkFormFactorMemory(formFactorMemoryEstimate(options.formFactors, static_cast<int>(elements),
                                                    static_cast<int>(std::min(patches, elements)),
                                                    options.raysPerElement, options.receiverPoints),
                           availableMemoryBytes(), options.formFactors);
   }
+  // Slivers first, whatever the size rule: a sliver smaller than the element area is still
+  // faceted along its length.
+  mesh.splitSlivers(kMaxAspectRatio, sizing.edge / kSliverEdgeFraction);
   if (analytic) {
     // Shooting patches first (coarser), then elements inside them.
-    if (patchArea < out.maxArea)
+    if (patchArea < elementArea)
       throw InputError("--patch-area must not be below the element area");
     mesh.subdivideUniform(patchArea);
     mesh.markShooters();
   }
-  mesh.subdivideUniform(out.maxArea);
+  if (sizing.targetCount > 0) {
+    mesh.subdivideToCount(sizing.targetCount);
+    for (int e = 0; e < mesh.elementCount(); ++e) out.maxArea = std::max(out.maxArea, mesh.area(e));
+  } else
+    mesh.subdivideUniform(sizing.maxArea);
+  if (analytic) checkAnalyticCost(mesh, options);
   return out;
 }
 

@@ -13,6 +13,11 @@ namespace rad {
 inline constexpr int kMaxRaysPerElement = (1 << 24) - 1;
 inline constexpr double kMaxElements = 4e6;
 inline constexpr double kMaxCoordinate = 1e15;
+// Analytic form factors: the most shadow rays (elements × shooting patches × receiver points ×
+// shadow rays) a solve may need in the worst case, about 17 minutes at the rate assumed for the
+// estimate in the message (two cores do 5 to 20 million per second).
+inline constexpr double kMaxAnalyticShadowRays = 1e10;
+inline constexpr double kAssumedShadowRaysPerSecond = 1e7;
 
 // Upper bound on the memory of the form-factor rows a run may store: hemisphere rows hold at
 // most min(rays, elements) entries each; analytic rows (gathering matrix or patch shots) at

@@ -106,6 +106,7 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
   f.add(o.raysPerElement);
   f.add(o.maxArea);
   f.add(o.targetElements);
+  f.add(o.elementSize);
   f.add(o.seed);
   f.add(o.tolerance);
   f.add(o.maxIterations);
@@ -195,6 +196,8 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   result.report.solverName = meta.value("solver", std::string("saved")) + " (reused)";
   result.report.converged = meta.value("converged", false);
   result.report.maxArea = meshed.maxArea;
+  result.report.elementSize = meshed.sizing.edge;
+  result.report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
   result.report.reusedSavedSolution = true;
   return result;
 }

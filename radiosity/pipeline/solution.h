@@ -52,8 +52,10 @@ struct SolveReport {
   double finalProgress = 0;  // residual or unshot fraction reached
   bool converged = false;
   StopReason stoppedBy = StopReason::Tolerance;
-  double maxArea = 0;
-  int shooters = 0;  // elements (hemisphere) or shooting patches (analytic)
+  double maxArea = 0;           // the element area bound (with --elements: the largest)
+  double elementSize = 0;       // S of radiosity/pipeline/element_size.h
+  std::string elementSizeRule;  // which rule set it: elementSizeRuleName
+  int shooters = 0;             // elements (hemisphere) or shooting patches (analytic)
   int rowsComputed = 0;
   uint64_t specularRays = 0;  // continuations through mirrors and glass
   uint64_t raysCast = 0;

@@ -23,6 +23,9 @@ void validateSolveOptions(const SolveOptions& options) {
     throw InputError("--rays must be at most " + std::to_string(kMaxRaysPerElement));
   if (options.maxArea < 0 || !std::isfinite(options.maxArea))
     throw InputError("--max-area must be a positive number");
+  if (options.elementSize < 0 || !std::isfinite(options.elementSize))
+    throw InputError("--element-size must be a positive number");
+  if (options.targetElements < 0) throw InputError("--elements must be positive");
   if (!(options.tolerance >= 0) || !std::isfinite(options.tolerance))
     throw InputError("--tolerance must be a non-negative number");
   if (options.maxIterations < 0) throw InputError("--max-iterations must be non-negative");
@@ -62,8 +65,12 @@ void checkOptionsApply(const SolveOptions& options, const std::set<std::string>&
     for (const char* name : {"--patch-area", "--shadow-rays", "--receiver-points"})
       unused(name, method + " casts hemisphere rays per element (--rays); " + name +
                        " applies to --form-factors analytic");
-  if (options.maxArea > 0)
+  if (options.maxArea > 0) {
     unused("--elements", "--max-area sets the element size; --elements only derives it");
+    unused("--element-size", "--max-area sets the element size");
+  }
+  if (options.elementSize > 0)
+    unused("--elements", "--element-size sets the element size; --elements only derives it");
   if (options.bounces >= 0)
     unused("--tolerance", "--bounces runs exactly that many Jacobi bounces, whatever the residual");
   if (!(options.refineThreshold > 0))

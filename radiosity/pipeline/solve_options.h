@@ -25,8 +25,12 @@ struct SolveOptions {
   TwoSidedInput twoSided;  // scene input: --two-sided, --two-sided-materials
   SolverKind solver = SolverKind::Progressive;
   int raysPerElement = 1024;  // hemisphere: rays per element row
-  double maxArea = 0;         // scene units²; 0: totalArea / targetElements
-  int targetElements = 1500;  // used when maxArea is 0
+  // Element size (radiosity/pipeline/element_size.h): at most one of the three is given; none
+  // given, the size derives from the scene's extent and area.
+  double maxArea = 0;      // scene units²: largest element area; 0: not given
+  double elementSize = 0;  // scene units: edge of the equilateral triangle of the largest
+                           // element area; 0: not given
+  int targetElements = 0;  // element count, met within about 20%; 0: not given
   uint64_t seed = 1;
   int threads = 0;  // 0: all hardware threads
   double tolerance = 1e-4;

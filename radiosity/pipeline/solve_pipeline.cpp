@@ -110,10 +110,16 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   MeshedScene meshed = meshScene(solution.scene, options);
   solution.mesh = std::move(meshed.mesh);
   report.maxArea = meshed.maxArea;
+  report.elementSize = meshed.sizing.edge;
+  report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
   report.times.mesh = since(t);
   logInfo("mesh: " + std::to_string(solution.mesh->patchCount()) + " patches, " +
-          std::to_string(solution.mesh->elementCount()) + " elements (max area " +
-          formatNumber(report.maxArea) + ")");
+          std::to_string(solution.mesh->elementCount()) + " elements (element size " +
+          formatNumber(report.elementSize) + ", set by " +
+          (meshed.sizing.rule == ElementSizeRule::SceneDefault
+               ? std::string("the scene's extent and area")
+               : "--" + report.elementSizeRule) +
+          ", max area " + formatNumber(report.maxArea) + ")");
   throwIfInterrupted();
   t = Clock::now();
   const RayCaster rays(*solution.mesh, solution.scene);

@@ -54,6 +54,13 @@ TEST(OptionsApply, ElementsWithMaxAreaAndToleranceWithBouncesAreRefused) {
   EXPECT_NE(refusal(o, {"--elements", "--max-area"}).find("--elements is not used"),
             std::string::npos);
   EXPECT_EQ(refusal(SolveOptions(), {"--elements"}), "");
+  EXPECT_NE(refusal(o, {"--element-size", "--max-area"}).find("--element-size is not used"),
+            std::string::npos);
+  SolveOptions sized;
+  sized.elementSize = 0.2;
+  EXPECT_NE(refusal(sized, {"--elements", "--element-size"}).find("--elements is not used"),
+            std::string::npos);
+  EXPECT_EQ(refusal(sized, {"--element-size"}), "");
   SolveOptions bounces;
   bounces.solver = SolverKind::Jacobi;
   bounces.bounces = 3;
