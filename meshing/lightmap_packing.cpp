@@ -30,9 +30,15 @@ std::vector<Sized> rectSizes(const LightmapCharts& charts, double texelSize, int
   return sizes;
 }
 
-// Places rectangles on shelves of `atlasWidth`; returns the height used (or INT_MAX if a chart is
-// wider than the atlas).
-int shelfPack(const std::vector<Sized>& sizes, int atlasWidth, std::vector<ChartRect>& rects) {
+struct Shelves {
+  int pages = 1;
+  int height = 0;  // of the tallest page
+};
+
+// Places rectangles on shelves of `atlasWidth`, starting a new page where a shelf would pass
+// `pageHeight`. Returns height INT_MAX if a chart is wider than the atlas.
+Shelves shelfPack(const std::vector<Sized>& sizes, int atlasWidth, int pageHeight,
+                  std::vector<ChartRect>& rects) {
   std::vector<int> order(sizes.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
@@ -40,15 +46,23 @@ int shelfPack(const std::vector<Sized>& sizes, int atlasWidth, std::vector<Chart
                                               : sizes[a].width > sizes[b].width;
   });
   rects.assign(sizes.size(), {});
-  int x = 0, y = 0, shelf = 0;
+  Shelves used;
+  int x = 0, y = 0, shelf = 0, page = 0;
   for (int i : order) {
-    if (sizes[i].width > atlasWidth) return std::numeric_limits<int>::max();
+    if (sizes[i].width > atlasWidth) return {1, std::numeric_limits<int>::max()};
     if (x + sizes[i].width > atlasWidth) y += shelf, x = 0, shelf = 0;
-    rects[i] = {x, y, sizes[i].width, sizes[i].height, sizes[i].rotated};
+    if (y + sizes[i].height > pageHeight && y > 0) ++page, x = 0, y = 0, shelf = 0;
+    rects[i] = {x, y, sizes[i].width, sizes[i].height, sizes[i].rotated, page};
     x += sizes[i].width;
     shelf = std::max(shelf, sizes[i].height);
+    used.height = std::max(used.height, y + shelf);
   }
-  return y + shelf;
+  used.pages = page + 1;
+  return used;
+}
+
+int shelfPack(const std::vector<Sized>& sizes, int atlasWidth, std::vector<ChartRect>& rects) {
+  return shelfPack(sizes, atlasWidth, std::numeric_limits<int>::max(), rects).height;
 }
 
 }  // namespace
@@ -66,21 +80,32 @@ LightmapLayout packLightmapCharts(const LightmapCharts& charts,
   if (options.texelSize > 0) {
     layout.texelSize = options.texelSize;
     const std::vector<Sized> sizes = rectSizes(charts, options.texelSize, options.padding);
+    const int maxSide = options.maxAtlasSize;
     double rectArea = 0;
     int widest = 0;
     for (const Sized& s : sizes)
       rectArea += double(s.width) * s.height, widest = std::max(widest, s.width);
+    if (widest > maxSide)
+      throw InputError("a lightmap chart needs " + std::to_string(widest) +
+                       " texels at texel size " + std::to_string(options.texelSize) +
+                       " (padding included), more than a page of " + std::to_string(maxSide) +
+                       " texels; lower --texel-density or raise --lightmap-size");
     int width = std::max(widest, static_cast<int>(std::ceil(std::sqrt(rectArea / 0.85))));
-    int height = shelfPack(sizes, width, rects);
+    int height =
+        width <= maxSide ? shelfPack(sizes, width, rects) : std::numeric_limits<int>::max();
     // Widen until the atlas is about square (shelves waste some of the estimate).
-    while (height > width * 1.1 && width < options.maxAtlasSize) {
-      width = std::min(options.maxAtlasSize, static_cast<int>(width * 1.05) + 1);
+    while (width < maxSide && height > width * 1.1) {
+      width = std::min(maxSide, static_cast<int>(width * 1.05) + 1);
       height = shelfPack(sizes, width, rects);
     }
-    if (width > options.maxAtlasSize || height > options.maxAtlasSize)
-      throw InputError("texel size " + std::to_string(options.texelSize) +
-                       " needs an atlas larger than " + std::to_string(options.maxAtlasSize) +
-                       " texels; use a larger --texel-size");
+    if (width > maxSide || height > maxSide) {
+      // More than one page: full-width pages, each filled before the next begins.
+      width = maxSide;
+      const Shelves shelves = shelfPack(sizes, width, maxSide, rects);
+      RAD_CHECK_LE(shelves.height, maxSide);  // every chart fits a page (checked above)
+      layout.pages = shelves.pages;
+      height = shelves.height;
+    }
     layout.width = width;
     layout.height = height;
   } else {
@@ -97,7 +122,9 @@ LightmapLayout packLightmapCharts(const LightmapCharts& charts,
     if (!fits(hi))
       throw InputError(std::to_string(charts.charts.size()) + " charts with " +
                        std::to_string(options.padding) + " texels of padding do not fit a " +
-                       std::to_string(side) + "² lightmap; raise --lightmap-size");
+                       std::to_string(side) +
+                       "² lightmap; raise --lightmap-size, or give --texel-density (without "
+                       "--lightmap-size) to spread them over several pages");
     while (fits(lo)) lo *= 0.5;
     for (int i = 0; i < 40; ++i) {  // bisection in log space: densest texel that still fits
       const double mid = std::sqrt(lo * hi);
@@ -126,6 +153,13 @@ LightmapLayout packLightmapCharts(const LightmapCharts& charts,
     }
   }
   return layout;
+}
+
+double defaultTexelSize(const PatchMesh& mesh) {
+  double area = 0;
+  for (int e = 0; e < mesh.elementCount(); ++e) area += mesh.area(e);
+  RAD_CHECK_GT(area, 0.0);
+  return std::sqrt(area / kDefaultLightmapTexels);
 }
 
 }  // namespace rad

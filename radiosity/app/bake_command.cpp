@@ -1,7 +1,9 @@
 // `radiosity bake SCENE.obj --out DIR`: the solution baked into a lightmap atlas and into exports
 // that game engines and DCC tools load (glTF binary, OBJ + MTL, PLY vertex colours).
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -12,6 +14,7 @@
 #include "meshing/lightmap_packing.h"
 #include "meshing/mesh_uv_layout.h"
 #include "meshing/vertex_interpolation.h"
+#include "radiosity/app/baked_materials.h"
 #include "radiosity/app/commands.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
@@ -28,6 +31,7 @@
 #include "radiosity/pipeline/mesh_stage.h"
 #include "radiosity/pipeline/resource_limits.h"
 #include "radiosity/pipeline/solution_source.h"
+#include "radiosity/pipeline/solution_tone_map.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/lightmap_uv_check.h"
@@ -41,8 +45,9 @@ namespace {
 struct BakeOptions {
   SolveOptions solve;
   std::string solverName = "progressive";
-  double texelSize = 0;
-  int lightmapSize = 1024;
+  double texelSize = 0;     // --texel-size, scene units per texel; 0: not given
+  double texelDensity = 0;  // --texel-density, texels per scene unit; 0: not given
+  int lightmapSize = 0;     // --lightmap-size; 0: not given
   int padding = 2;
   int dilation = -1;  // -1: the padding
   double chartAngle = 30;
@@ -58,22 +63,53 @@ double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// The lightmap atlas of `mesh` as the options ask: the scene's own UVs, or generated charts
-// packed at a texel size or into a square atlas. InputError naming the scene when they do not fit.
-LightmapLayout layoutLightmap(const PatchMesh& mesh, const BakeOptions& o) {
+// The lightmap atlas of `mesh` as the options ask, and which rule chose its texel size (for the
+// log and bake.json). The one place that decides:
+//   --lightmap-size alone      one square page of that side, the densest texels that fit;
+//   --texel-size/-density      that density, on as many pages as needed of at most
+//                              --lightmap-size (default kDefaultMaxLightmapPage) texels a side;
+//   neither                    the scene's default density (defaultTexelSize), pages as above.
+// With the scene's UVs there is one page, its side from the density (at most the page size when
+// the density is the default). InputError naming the scene when the charts do not fit.
+LightmapLayout layoutLightmap(const PatchMesh& mesh, const BakeOptions& o, std::string& rule) {
+  const double asked = o.texelSize > 0 ? o.texelSize : o.texelDensity > 0 ? 1 / o.texelDensity : 0;
+  const bool onePage = o.lightmapSize > 0 && asked == 0;
+  const double texelSize = onePage ? 0 : asked > 0 ? asked : defaultTexelSize(mesh);
+  const int maxPage = o.lightmapSize > 0 ? o.lightmapSize : kDefaultMaxLightmapPage;
+  std::ostringstream why;
+  if (onePage)
+    why << "--lightmap-size " << o.lightmapSize << ": the densest texels that fit one page";
+  else if (asked > 0)
+    why << (o.texelSize > 0 ? "--texel-size" : "--texel-density") << ", pages of at most "
+        << maxPage << "²";
+  else
+    why << "default: " << formatNumber(kDefaultLightmapTexels) << " texels over the scene's "
+        << formatNumber(kDefaultLightmapTexels * texelSize * texelSize)
+        << " units² of surface, pages of at most " << maxPage << "²";
+  rule = why.str();
   try {
     if (o.sceneUvs) {
-      const int side =
-          o.texelSize > 0 ? atlasSideForTexelSize(mesh, o.texelSize, 16384) : o.lightmapSize;
+      int side = o.lightmapSize;
+      if (asked > 0)
+        side = atlasSideForTexelSize(mesh, asked, o.lightmapSize > 0 ? o.lightmapSize : 16384);
+      else if (!onePage)
+        side = std::min(kDefaultMaxLightmapPage,
+                        atlasSideForTexelSize(mesh, texelSize, std::numeric_limits<int>::max()));
       return layoutFromMeshUvs(mesh, side, side, o.padding);
     }
     return packLightmapCharts(buildLightmapCharts(mesh, {o.chartAngle}),
-                              {o.texelSize, o.lightmapSize, o.padding});
+                              {texelSize, onePage ? o.lightmapSize : 0, o.padding, maxPage});
   } catch (const InputError& e) {
     // The options do not fit this scene's charts: name the scene.
     if (!e.file().empty()) throw;
     throw InputError(o.solve.scenePath, 0, e.what());
   }
+}
+
+// lightmap.EXT for one page; lightmap_0.EXT, lightmap_1.EXT, … for several.
+std::string lightmapFileName(int page, int pages, const std::string& extension) {
+  return pages == 1 ? "lightmap." + extension
+                    : "lightmap_" + std::to_string(page) + "." + extension;
 }
 
 void runBake(const CLI::App& command, BakeOptions& o) {
@@ -93,15 +129,20 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   // lightmap size that cannot hold them fails in seconds, not after the solve. Uniform meshing is
   // deterministic, so without refinement that layout is the solved mesh's own.
   LightmapLayout layout;
+  std::string layoutRule;
   bool earlyLayout = false;
   double chartSeconds = 0;
   if (!o.noLightmap) {
     const auto t = std::chrono::steady_clock::now();
     checkSceneLimits(scene);  // as the solve does before it meshes
-    const LightmapLayout planned = layoutLightmap(*meshScene(scene, o.solve).mesh, o);
+    const LightmapLayout planned = layoutLightmap(*meshScene(scene, o.solve).mesh, o, layoutRule);
     earlyLayout = !(o.solve.refineThreshold > 0);
     if (earlyLayout) layout = planned;
     chartSeconds = since(t);
+    logInfo("lightmap plan: " + std::to_string(planned.rects.size()) + " charts on " +
+            std::to_string(planned.pages) + " page(s) of " + std::to_string(planned.width) + "×" +
+            std::to_string(planned.height) + ", " + formatNumber(1 / planned.texelSize) +
+            " texels per scene unit (" + layoutRule + ")");
   }
   // A solution `solve` (or an earlier render) saved in --out is reused when it matches.
   SolveResult result = solveOrReuse(std::move(scene), o.solve, {o.solutionDir, o.solve.outputDir});
@@ -114,9 +155,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   const VertexInterpolation interpolation(mesh);
   const std::vector<Rgb> vertexRadiance =
       interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
-  const ToneMap toneMap = o.exposure ? ToneMap{*o.exposure}
-                                     : solutionToneMap(solution.radiosity, solution.problem.area,
-                                                       solution.problem.emission);
+  const ToneMap toneMap = o.exposure ? ToneMap{*o.exposure} : solutionToneMap(solution);
   std::vector<std::string> materialNames;
   for (const Material& m : solution.scene.materials) materialNames.push_back(m.name);
 
@@ -126,11 +165,11 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                             {"tone_map_exposure", toneMap.exposure},
                             {"solve_seconds", result.report.times.total},
                             {"reused_saved_solution", result.report.reusedSavedSolution}};
-  Lightmap lightmap;
-  std::vector<std::uint8_t> png;
+  std::vector<Lightmap> lightmaps;  // one per page
+  BakedLook look;
   if (!o.noLightmap) {
     auto t = std::chrono::steady_clock::now();
-    if (!earlyLayout) layout = layoutLightmap(mesh, o);
+    if (!earlyLayout) layout = layoutLightmap(mesh, o, layoutRule);
     chartSeconds += since(t);
     t = std::chrono::steady_clock::now();
     // Per element: the reflectance and emission it was solved with (textures' averages), from
@@ -142,69 +181,93 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     auto texelRho = [&](int e, const Eigen::Vector3d& b) {
       return reflectanceAt(solution.scene, mesh, e, b[1], b[2]);
     };
+    const bool irradiance = o.content == LightmapContent::Irradiance;
+    std::unique_ptr<const RayCaster> caster;
+    std::unique_ptr<const RenderScene> view;
+    std::unique_ptr<const FinalGather> gather;
     // H/π at the vertices: the light arriving, smooth across elements of different reflectance.
     std::vector<Rgb> vertexIncident;
-    const bool irradiance = o.content == LightmapContent::Irradiance;
+    const bool textured = irradiance || !solution.scene.textures.empty();
     if (o.gather > 0) {
-      // Per-texel final gather: direct light by shadow rays to the emitters and gathered light
-      // from the solution at every texel, for shadows sharper than the elements.
-      const RayCaster caster(mesh, solution.scene);
-      const RenderScene view(solution.scene, mesh, caster);
-      const FinalGather gather(view, solution.radiosity, {o.gather, 16});
-      const uint64_t seed = o.solve.seed;
-      lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation,
-                              [&](int e, const Eigen::Vector3d& b, size_t texel) {
-                                Rng rng(streamKey(seed, 0x6c6d6170ull, texel));  // per texel
-                                RayCounts counts;
-                                const Rgb out = gather.outgoingRadiance(e, b, rng, counts);
-                                // Gathered at the texel with its own ρ: divide that one out.
-                                const Rgb& le = solution.scene.materials[mesh.material(e)].emission;
-                                return irradiance ? incidentLight(out, le, texelRho(e, b)) : out;
-                              });
-    } else if (irradiance || !solution.scene.textures.empty()) {
-      // The interpolated solution, with the texture's detail inside each element (or without the
-      // albedo at all).
+      caster = std::make_unique<const RayCaster>(mesh, solution.scene);
+      view = std::make_unique<const RenderScene>(solution.scene, mesh, *caster);
+      gather = std::make_unique<const FinalGather>(*view, solution.radiosity,
+                                                   FinalGatherOptions{o.gather, 16});
+    } else if (textured) {
       std::vector<Rgb> incident(mesh.elementCount());
       for (int e = 0; e < mesh.elementCount(); ++e)
         incident[e] = incidentLight(solution.radiosity[e], M_PI * elementLe[e], elementRho[e]);
       vertexIncident = interpolateVertexRadiance(interpolation, incident);
-      lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation,
-                              [&](int e, const Eigen::Vector3d& b, size_t) {
-                                const auto& v = interpolation.triangle(e);
-                                auto at = [&](const std::vector<Rgb>& perVertex) {
-                                  return perVertex[v[0]] * b[0] + perVertex[v[1]] * b[1] +
-                                         perVertex[v[2]] * b[2];
-                                };
-                                if (irradiance) return at(vertexIncident);
-                                if (!hasReflectanceTexture(solution.scene, mesh, e))
-                                  return at(vertexRadiance);
-                                return elementLe[e] + texelRho(e, b) * at(vertexIncident);
-                              });
-    } else {
-      lightmap = bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation);
     }
-    png = encodePng(lightmap.radiance, toneMap);
-    if (lightmap.crowdedTexels > 0)
-      logWarning(o.solve.scenePath + ": " + std::to_string(lightmap.crowdedTexels) +
+    }
+    for (int page = 0; page < layout.pages; ++page) {
+      if (gather) {
+        // Per-texel final gather: direct light by shadow rays to the emitters and gathered light
+        // from the solution at every texel, for shadows sharper than the elements.
+        const uint64_t seed = o.solve.seed;
+        lightmaps.push_back(bakeLightmap(
+            mesh, layout, interpolation, vertexRadiance, o.dilation,
+            [&](int e, const Eigen::Vector3d& b, size_t texel) {
+              Rng rng(streamKey(seed, 0x6c6d6170ull + page, texel));  // per texel and page
+              RayCounts counts;
+              const Rgb out = gather->outgoingRadiance(e, b, rng, counts);
+              // Gathered at the texel with its own ρ: divide that one out.
+              const Rgb& le = solution.scene.materials[mesh.material(e)].emission;
+              return irradiance ? incidentLight(out, le, texelRho(e, b)) : out;
+            },
+            page));
+      } else if (textured) {
+        // The interpolated solution, with the texture's detail inside each element (or without
+        // the albedo at all).
+        lightmaps.push_back(bakeLightmap(
+            mesh, layout, interpolation, vertexRadiance, o.dilation,
+            [&](int e, const Eigen::Vector3d& b, size_t) {
+              const auto& v = interpolation.triangle(e);
+              auto at = [&](const std::vector<Rgb>& perVertex) {
+                return perVertex[v[0]] * b[0] + perVertex[v[1]] * b[1] + perVertex[v[2]] * b[2];
+              };
+              if (irradiance) return at(vertexIncident);
+              if (!hasReflectanceTexture(solution.scene, mesh, e)) return at(vertexRadiance);
+              return elementLe[e] + texelRho(e, b) * at(vertexIncident);
+            },
+            page));
+      } else {
+        lightmaps.push_back(
+            bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation, {}, page));
+      }
+      look.lightmapPages.push_back(encodePng(lightmaps.back().radiance, toneMap));
+    }
+    size_t crowded = 0;
+    auto count = [&](TexelState state) {
+      size_t n = 0;
+      for (const Lightmap& l : lightmaps) n += l.count(state);
+      return n;
+    };
+    for (const Lightmap& l : lightmaps) crowded += l.crowdedTexels;
+    if (crowded > 0)
+      logWarning(o.solve.scenePath + ": " + std::to_string(crowded) +
                  " texels lie next to two UV islands (islands less than 2 texels apart at " +
                  std::to_string(layout.width) + "×" + std::to_string(layout.height) +
                  "): bilinear filtering bleeds there; space the islands or lower --lightmap-size");
     logInfo("lightmap: " + std::string(o.sceneUvs ? "the scene's UVs, " : "") +
-            std::to_string(layout.rects.size()) + " charts, " + std::to_string(layout.width) + "×" +
-            std::to_string(layout.height) + " texels of " + std::to_string(layout.texelSize) +
-            " scene units");
+            std::to_string(layout.rects.size()) + " charts on " + std::to_string(layout.pages) +
+            " page(s) of " + std::to_string(layout.width) + "×" + std::to_string(layout.height) +
+            " texels of " + formatNumber(layout.texelSize) + " scene units (" + layoutRule + ")");
     summary["lightmap"] = {{"uvs", o.sceneUvs ? "scene" : "generated"},
                            {"charts", layout.rects.size()},
+                           {"pages", layout.pages},
                            {"width", layout.width},
                            {"height", layout.height},
                            {"texel_size", layout.texelSize},
+                           {"texel_density", 1 / layout.texelSize},
+                           {"size_rule", layoutRule},
                            {"padding", layout.padding},
-                           {"dilation", lightmap.dilationRadius},
-                           {"texels_covered", lightmap.count(TexelState::Covered)},
-                           {"texels_conservative", lightmap.count(TexelState::Conservative)},
-                           {"texels_dilated", lightmap.count(TexelState::Dilated)},
-                           {"texels_empty", lightmap.count(TexelState::Empty)},
-                           {"texels_next_to_two_charts", lightmap.crowdedTexels},
+                           {"dilation", o.dilation},
+                           {"texels_covered", count(TexelState::Covered)},
+                           {"texels_conservative", count(TexelState::Conservative)},
+                           {"texels_dilated", count(TexelState::Dilated)},
+                           {"texels_empty", count(TexelState::Empty)},
+                           {"texels_next_to_two_charts", crowded},
                            {"chart_seconds", chartSeconds},
                            {"gather_rays", o.gather},
                            {"bake_seconds", since(t)},
@@ -217,6 +280,13 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   }
   const BakedMesh baked = makeBakedMesh(mesh, interpolation, vertexRadiance,
                                         o.noLightmap ? nullptr : &layout, materialNames);
+  if (!o.noLightmap) {
+    // The scene's base colours stay in the glTF (its textures on TEXCOORD_0) under the lightmap.
+    std::vector<std::vector<std::uint8_t>> pages = std::move(look.lightmapPages);
+    look = bakedBaseColours(solution.scene, !baked.textureUvs.empty());
+    look.lightmapPages = std::move(pages);
+    summary["base_colour_images"] = look.images.size();
+  }
 
   // Everything goes under temporary names; only when all are complete do they take their names.
   throwIfInterrupted();
@@ -230,19 +300,25 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   };
   writeVertexColorsPly(open("vertex_colors.ply", true), interpolation, mesh, vertexRadiance,
                        toneMap);
-  writeBakedGlb(open("scene_baked.glb", true), baked, o.noLightmap ? nullptr : &png, toneMap,
-                o.content);
-  if (!o.noLightmap) {
-    open("lightmap.png", true)
+  writeBakedGlb(open("scene_baked.glb", true), baked, look, toneMap, o.content);
+  std::vector<std::string> pngNames;
+  for (int page = 0; page < static_cast<int>(lightmaps.size()); ++page) {
+    const std::vector<std::uint8_t>& png = look.lightmapPages[page];
+    pngNames.push_back(lightmapFileName(page, layout.pages, "png"));
+    open(pngNames.back(), true)
         .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  }
+  if (!o.noLightmap) {
     std::ostream& obj = open("scene_baked.obj", false);
-    writeBakedObj(obj, open("scene_baked.mtl", false), baked, "scene_baked.mtl", "lightmap.png");
+    writeBakedObj(obj, open("scene_baked.mtl", false), baked, "scene_baked.mtl", pngNames);
   }
   summary["export_seconds"] = since(start);
   open("bake.json", false) << summary.dump(2) << "\n";
   // The EXR library writes by name (atomically on its own): last, so a failure before it leaves
   // nothing behind.
-  if (!o.noLightmap) writeExr((dir / "lightmap.exr").string(), lightmap.radiance);
+  for (int page = 0; page < static_cast<int>(lightmaps.size()); ++page)
+    writeExr((dir / lightmapFileName(page, layout.pages, "exr")).string(),
+             lightmaps[page].radiance);
   for (auto& f : files) f->commit();
   logInfo("baked " + o.solve.scenePath + " into " + o.solve.outputDir + " in " +
           std::to_string(since(start)) + " s after the solve");
@@ -260,13 +336,19 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
       ->required();
   addSolveOptions(*bake, o->solve, o->solverName);
   auto* texel = bake->add_option("--texel-size", o->texelSize,
-                                 "Lightmap texel size in scene units (atlas grows to fit)")
+                                 "Lightmap texel size in scene units (pages grow to fit)")
                     ->check(CLI::PositiveNumber);
-  bake->add_option("--lightmap-size", o->lightmapSize,
-                   "Side of the square atlas in texels when --texel-size is not given")
-      ->default_val(o->lightmapSize)
-      ->check(CLI::Range(8, 16384))
+  bake->add_option(
+          "--texel-density", o->texelDensity,
+          "Lightmap texels per scene unit (default: " + formatNumber(kDefaultLightmapTexels) +
+              " texels over the scene's surface); more pages when one does not hold them")
+      ->check(CLI::PositiveNumber)
       ->excludes(texel);
+  bake->add_option("--lightmap-size", o->lightmapSize,
+                   "Alone: the side of one square lightmap page, at the densest texels that fit; "
+                   "with --texel-density/--texel-size: the largest page side (default " +
+                       std::to_string(kDefaultMaxLightmapPage) + ")")
+      ->check(CLI::Range(8, 16384));
   bake->add_option("--padding", o->padding,
                    "Empty texels around each chart, each side (>= --dilation)")
       ->default_val(o->padding)

@@ -20,6 +20,7 @@
 #include "radiosity/output/contact_sheet.h"
 #include "radiosity/output/image_io.h"
 #include "radiosity/render/camera.h"
+#include "radiosity/render/exposure_weights.h"
 #include "radiosity/render/image_renderer.h"
 #include "radiosity/render/render_methods.h"
 
@@ -125,8 +126,12 @@ void runCompare(const CLI::App& command, CompareOptions& o) {
   const MethodResult* reference = &results.front();
   for (const MethodResult& r : results)
     if (r.method->name == "path") reference = &r;
+  // Auto exposure from the lit surfaces in view: emitter and sky pixels do not set it.
   const ToneMap toneMap =
-      o.exposure ? ToneMap{*o.exposure} : ToneMap::autoExposure(reference->render.image.pixels, {});
+      o.exposure ? ToneMap{*o.exposure}
+                 : ToneMap::autoExposure(
+                       reference->render.image.pixels,
+                       exposureWeights(camera, *world.viewFor(*reference->method).scene));
   std::vector<SheetTile> tiles;
   for (const MethodResult& r : results) {
     // Short lines, so that the font can be doubled on modest tiles; a method's time includes

@@ -18,6 +18,7 @@
 #include "radiosity/output/image_io.h"
 #include "radiosity/pipeline/saved_solution.h"
 #include "radiosity/render/camera.h"
+#include "radiosity/render/exposure_weights.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
 #include "radiosity/render/path_expression.h"
@@ -215,8 +216,10 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
   ensureDirectory(o.solve.outputDir);
   const std::filesystem::path dir(o.solve.outputDir);
+  // Auto exposure from the lit surfaces in view: emitter and sky pixels do not set it.
   const ToneMap toneMap =
-      o.exposure ? ToneMap{*o.exposure} : ToneMap::autoExposure(render.image.pixels, {});
+      o.exposure ? ToneMap{*o.exposure}
+                 : ToneMap::autoExposure(render.image.pixels, exposureWeights(camera, renderScene));
   AtomicPath exr((dir / "render.exr").string());
   writeExr(exr.tempPath(), render.image);
   AtomicPath png((dir / "render.png").string());

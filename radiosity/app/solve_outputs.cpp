@@ -14,6 +14,7 @@
 #include "radiosity/output/tone_map.h"
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/pipeline/saved_solution.h"
+#include "radiosity/pipeline/solution_tone_map.h"
 #ifdef RADIOSITY_HAS_VIEWER
 #include "viewer/solution_vtp.h"
 #endif
@@ -129,8 +130,7 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   const VertexInterpolation interpolation(mesh);
   const std::vector<Rgb> vertexRadiance =
       interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
-  const ToneMap toneMap =
-      solutionToneMap(solution.radiosity, solution.problem.area, solution.problem.emission);
+  const ToneMap toneMap = solutionToneMap(solution);
   AtomicFile ply((dir / "vertex_colors.ply").string(), /*binary=*/true);
   writeVertexColorsPly(ply.stream(), interpolation, mesh, vertexRadiance, toneMap);
   std::vector<AtomicFile*> files = {&csv, &ply};

@@ -13,6 +13,7 @@
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/solution_source.h"
+#include "radiosity/pipeline/solution_tone_map.h"
 #include "radiosity/scene/camera.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/solvers/gathering_solvers.h"
@@ -183,8 +184,7 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
                    {args.solutionDir, ""});
   const Solution& solution = result.solution;
   cameraFor(options.scenePath);
-  const ToneMap toneMap =
-      solutionToneMap(solution.radiosity, solution.problem.area, solution.problem.emission);
+  const ToneMap toneMap = solutionToneMap(solution);
   vtkSmartPointer<vtkPolyData> data =
       makeSolutionPolyData(*solution.mesh, solution.radiosity, solution.unshot, toneMap);
 

@@ -65,8 +65,9 @@ size_t Lightmap::count(TexelState s) const {
 Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
                       const VertexInterpolation& interpolation,
                       const std::vector<Rgb>& vertexRadiance, int dilationRadius,
-                      const TexelEvaluator& evaluate) {
+                      const TexelEvaluator& evaluate, int page) {
   RAD_CHECK_GE(dilationRadius, 0);
+  RAD_CHECK_MSG(page >= 0 && page < layout.pages, "bakeLightmap: no such lightmap page");
   RAD_CHECK_LE(dilationRadius, layout.padding);  // more: charts would bleed into each other
   RAD_CHECK_EQ(vertexRadiance.size(), interpolation.vertexCount());  // one per output vertex
   const int width = layout.width, height = layout.height;
@@ -90,6 +91,7 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
   // `state` and the interpolated value at the barycentric weights b it gives.
   auto rasterise = [&](TexelState state, auto&& weights) {
     for (int e = 0; e < elements; ++e, progress.advance()) {
+      if (layout.page(e) != page) continue;
       const auto& t = layout.texels[e];
       const Vec2 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]), hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
       const int x0 = std::max(0, static_cast<int>(std::floor(lo.x()))),

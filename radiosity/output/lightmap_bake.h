@@ -47,11 +47,13 @@ struct Lightmap {
 // With `evaluate`, every texel an element covers (fully or in part) takes evaluate(element,
 // barycentric, texel) instead of the interpolated value — e.g. a per-texel final gather — computed
 // in parallel before the dilation.
+//
+// One call bakes one page of the layout (`page` < layout.pages): the elements of the charts on it.
 using TexelEvaluator =
     std::function<Rgb(int element, const Eigen::Vector3d& barycentric, size_t texel)>;
 Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
                       const VertexInterpolation& interpolation,
                       const std::vector<Rgb>& vertexRadiance, int dilationRadius,
-                      const TexelEvaluator& evaluate = {});
+                      const TexelEvaluator& evaluate = {}, int page = 0);
 
 }  // namespace rad

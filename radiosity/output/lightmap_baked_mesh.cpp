@@ -14,26 +14,34 @@ BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interp
   RAD_CHECK_EQ(vertexRadiance.size(), interpolation.vertexCount());  // one per output vertex
   BakedMesh out;
   out.materialNames = materialNames;
-  // (interpolated vertex, chart, lightmap UV) → output vertex. Within a generated chart a vertex
-  // has one UV; a scene's UV island may still cut a vertex (a seam ending inside the island).
-  std::map<std::tuple<int, int, double, double>, int> index;
+  // (interpolated vertex, chart, lightmap UV, texture UV) → output vertex. Within a generated
+  // chart a vertex has one UV; a scene's UV island may still cut a vertex (a seam ending inside
+  // the island), and texture seams cut vertices too.
+  std::map<std::tuple<int, int, double, double, double, double>, int> index;
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const int chart = layout ? layout->chartOfElement[e] : 0;
+    const std::array<Eigen::Vector2d, 3> textureUvs =
+        mesh.hasUvs() ? mesh.cornerUvs(e) : std::array<Eigen::Vector2d, 3>{};
     std::array<int, 3> tri;
     for (int k = 0; k < 3; ++k) {
       const int v = interpolation.triangle(e)[k];
       const Eigen::Vector2d uv = layout ? layout->uv(e, k) : Eigen::Vector2d::Zero();
-      auto [it, inserted] = index.emplace(std::make_tuple(v, chart, uv.x(), uv.y()),
-                                          static_cast<int>(out.positions.size()));
+      // The scene's UVs have v up (OBJ); glTF's origin is the top-left corner.
+      const Eigen::Vector2d textureUv(textureUvs[k].x(), 1.0 - textureUvs[k].y());
+      auto [it, inserted] =
+          index.emplace(std::make_tuple(v, chart, uv.x(), uv.y(), textureUv.x(), textureUv.y()),
+                        static_cast<int>(out.positions.size()));
       if (inserted) {
         out.positions.push_back(interpolation.position(v));
         out.normals.push_back(interpolation.normal(v));
         out.radiance.push_back(vertexRadiance[v]);
         if (layout) out.uvs.push_back(uv);
+        if (mesh.hasUvs()) out.textureUvs.push_back(textureUv);
       }
       tri[k] = it->second;
     }
     out.triangles.push_back(tri);
+    out.pages.push_back(layout ? layout->page(e) : 0);
     const int m = mesh.material(e);
     RAD_CHECK_MSG(m >= 0 && m < static_cast<int>(materialNames.size()),
                   "makeBakedMesh: material index without a name");

@@ -5,12 +5,21 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
+#include "meshing/lightmap_charts.h"
+#include "meshing/vertex_interpolation.h"
+#include "radiosity/app/baked_materials.h"
+#include "radiosity/output/gltf_export.h"
 #include "radiosity/output/image_io.h"
+#include "radiosity/output/lightmap_bake.h"
+#include "radiosity/output/vertex_colors_ply.h"
+#include "radiosity/scene/scene_mesh.h"
 #include "tests/support/run_command.h"
 
 namespace rad {
@@ -100,14 +109,18 @@ TEST(CliBake, GlbHoldsGeometryLightmapUvsColoursAndTheEmbeddedPng) {
   ASSERT_GE(model.images[0].bufferView, 0);
   ASSERT_FALSE(model.meshes.empty());
   for (const auto& prim : model.meshes[0].primitives) {
-    for (const char* a : {"POSITION", "NORMAL", "TEXCOORD_0", "TEXCOORD_1", "COLOR_0"})
+    for (const char* a : {"POSITION", "NORMAL", "TEXCOORD_0", "TEXCOORD_1"})
       EXPECT_TRUE(prim.attributes.count(a)) << a;
     const auto& uv = model.accessors[prim.attributes.at("TEXCOORD_1")];
     EXPECT_EQ(uv.componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
     const auto& m = model.materials[prim.material];
     EXPECT_EQ(m.emissiveTexture.index, 0);
     EXPECT_EQ(m.emissiveTexture.texCoord, 1);  // the lightmap set
-    EXPECT_EQ(m.pbrMetallicRoughness.baseColorFactor[0], 0.0);
+    // The scene's base colour is kept (Kd of the Cornell box's materials: none is black), and
+    // COLOR_0, which would multiply it, is left out; _RADIANCE keeps the vertex radiance.
+    EXPECT_GT(m.pbrMetallicRoughness.baseColorFactor[0], 0.0);
+    EXPECT_FALSE(prim.attributes.count("COLOR_0"));
+    EXPECT_TRUE(prim.attributes.count("_RADIANCE"));
   }
   // UVs inside [0, 1] (a texture lookup outside would clamp to another chart's edge).
   const auto& acc = model.accessors[model.meshes[0].primitives[0].attributes.at("TEXCOORD_1")];
@@ -360,12 +373,247 @@ TEST(CliBake, BadOptionsFailAndLeaveNothing) {
   EXPECT_NE(r.stderrText.find("--dilation"), std::string::npos) << r.stderrText;
   EXPECT_FALSE(fs::exists(dir));
   r = runRadiosity("bake " + kData + "/tests/furnace_box.obj --out " + dir.string() +
-                   " --texel-size 0.1 --lightmap-size 64");
+                   " --texel-size 0.1 --texel-density 10");
   EXPECT_EQ(r.exitCode, 2);
   r = runRadiosity("bake " + kData + "/tests/missing.obj --out " + dir.string());
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.stderrText.find("missing.obj"), std::string::npos);
   EXPECT_TRUE(!fs::exists(dir) || fs::is_empty(dir));
+}
+
+// Auto exposure is set by the lit surfaces, sunlit ones included: a 2 × 2 floor (ρ = 0.5) under a
+// sun of irradiance 1 at 45° and a 1-high wall facing away from the sun, which shades the floor's
+// half x < 1. The sunlit half is 1/3 of the area and the brightest, so the 99th percentile is its
+// radiance: the direct part ρ E cos 45° / π = 0.1125 plus a few percent from the wall. The sun's
+// first shot is held in the problem's emission; were those elements taken for emitters, the
+// shaded floor and the wall, lit only indirectly, would set the exposure (4× higher or more).
+TEST(CliBake, SunlitSurfacesSetTheAutoExposure) {
+  const fs::path dir = scratchPath("bake_sun_exposure");
+  fs::create_directories(dir);
+  {
+    std::ofstream mtl(dir / "floor_wall.mtl");
+    mtl << "newmtl grey\nKd 0.5 0.5 0.5\n";
+    std::ofstream obj(dir / "floor_wall.obj");
+    obj << "mtllib floor_wall.mtl\nusemtl grey\n"
+           "v 0 0 0\nv 0 0 2\nv 2 0 2\nv 2 0 0\nf 1 2 3 4\n"  // floor, facing +y
+           "v 0 1 0\nv 0 1 2\nf 1 5 6 2\n";                   // wall at x = 0, facing +x
+  }
+  const fs::path out = dir / "out";
+  const auto r =
+      runRadiosity("bake " + (dir / "floor_wall.obj").string() + " --out " + out.string() +
+                   " --sun 1 -1 0 1 1 1 --elements 300 --rays 256 --no-lightmap -q");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  const double exposure =
+      nlohmann::json::parse(readText(out / "bake.json"))["tone_map_exposure"].get<double>();
+  const double direct = 0.5 * std::sqrt(0.5) / M_PI;
+  EXPECT_LE(exposure, 1 / direct * (1 + 1e-6));
+  EXPECT_GE(exposure, 1 / (1.3 * direct));
+  fs::remove_all(dir);
+}
+
+// Charts that need more than one small page: every page written (lightmap_P.png/.exr), the glTF
+// with one lightmap texture per page and each primitive on its page's, the MTL likewise, and every
+// filled texel of every page counted in bake.json and equal to the furnace's L = Ke / (1 − ρ) = 2.
+TEST(CliBake, SeveralPagesAreEachWrittenAndExported) {
+  const fs::path dir = scratchPath("bake_pages");
+  // 50 texels per unit: a face of the unit cube is 50 texels (+4 of padding), so a 64² page
+  // holds one face and the six faces (six charts, at right angles) need six pages.
+  const auto r = runRadiosity("bake " + kData + "/tests/furnace_box.obj --out " + dir.string() +
+                              " --solver gauss-seidel --tolerance 1e-8 --elements 300 --rays 64 "
+                              "--texel-density 50 --lightmap-size 64 --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  const auto summary = nlohmann::json::parse(readText(dir / "bake.json"));
+  const auto& lm = summary["lightmap"];
+  const int pages = lm["pages"].get<int>();
+  ASSERT_EQ(pages, 6);
+  EXPECT_NEAR(lm["texel_density"].get<double>(), 50.0, 1e-9);
+  EXPECT_FALSE(fs::exists(dir / "lightmap.png"));
+  size_t filled = 0;
+  for (int p = 0; p < pages; ++p) {
+    const std::string stem = "lightmap_" + std::to_string(p);
+    ASSERT_TRUE(fs::exists(dir / (stem + ".png"))) << stem;
+    const ImageRgb image = readExr((dir / (stem + ".exr")).string());
+    EXPECT_LE(image.width, 64);
+    EXPECT_LE(image.height, 64);
+    size_t onPage = 0;
+    for (const Rgb& px : image.pixels) {
+      if (px.isZero()) continue;
+      ++onPage;
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(px[c], 2.0, 2e-5) << stem;
+    }
+    EXPECT_GT(onPage, 0u) << stem << " is empty";
+    filled += onPage;
+  }
+  EXPECT_FALSE(fs::exists(dir / ("lightmap_" + std::to_string(pages) + ".exr")));
+  EXPECT_EQ(filled, lm["texels_covered"].get<size_t>() + lm["texels_conservative"].get<size_t>() +
+                        lm["texels_dilated"].get<size_t>());
+
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, (dir / "scene_baked.glb").string()))
+      << err;
+  ASSERT_EQ(model.images.size(), static_cast<size_t>(pages));  // no base-colour textures here
+  ASSERT_EQ(model.meshes.size(), 1u);
+  std::set<int> used;
+  for (const auto& prim : model.meshes[0].primitives) {
+    const int texture = model.materials[prim.material].emissiveTexture.index;
+    ASSERT_GE(texture, 0);
+    ASSERT_LT(texture, pages);
+    used.insert(texture);
+  }
+  EXPECT_EQ(used.size(), static_cast<size_t>(pages));  // every page shows on some primitive
+  validate(dir / "scene_baked.glb");
+  const std::string mtl = readText(dir / "scene_baked.mtl");
+  for (int p = 0; p < pages; ++p)
+    EXPECT_NE(mtl.find("map_Kd lightmap_" + std::to_string(p) + ".png"), std::string::npos) << p;
+  fs::remove_all(dir);
+}
+
+// A page size that cannot hold one chart at the asked density fails before the solve, naming the
+// options: no solve line ("mesh: ...") in the log, nothing written.
+TEST(CliBake, PagesTooSmallForAChartFailBeforeTheSolve) {
+  const fs::path dir = scratchPath("bake_page_too_small");
+  const auto r = runRadiosity("bake " + kData + "/cornell_box/cornell_box.obj --out " +
+                              dir.string() + " --texel-density 1000 --lightmap-size 64");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("cornell_box.obj: "), std::string::npos) << r.stderrText;
+  EXPECT_NE(r.stderrText.find("--texel-density"), std::string::npos) << r.stderrText;
+  EXPECT_EQ(r.stderrText.find("mesh: "), std::string::npos) << r.stderrText;
+  EXPECT_FALSE(fs::exists(dir));
+}
+
+// The default density follows the scene: the Cornell box in millimetres (×1000) gets texels
+// 1000× larger and the same atlas as in metres.
+TEST(CliBake, DefaultTexelDensityScalesWithTheScene) {
+  const fs::path scaled = scratchPath("bake_scaled_scene");
+  fs::create_directories(scaled);
+  {
+    std::ifstream in(kData + "/cornell_box/cornell_box.obj");
+    std::ofstream out(scaled / "cornell_box.obj");
+    std::string line;
+    while (std::getline(in, line)) {
+      double x, y, z;
+      if (line.rfind("v ", 0) == 0 && std::sscanf(line.c_str(), "v %lf %lf %lf", &x, &y, &z) == 3)
+        out << "v " << 1000 * x << ' ' << 1000 * y << ' ' << 1000 * z << '\n';
+      else
+        out << line << '\n';
+    }
+  }
+  fs::copy_file(kData + "/cornell_box/cornell_box.mtl", scaled / "cornell_box.mtl");
+  nlohmann::json lightmaps[2];
+  for (int i = 0; i < 2; ++i) {
+    const std::string scene =
+        i == 0 ? kData + "/cornell_box/cornell_box.obj" : (scaled / "cornell_box.obj").string();
+    const fs::path dir = scratchPath("bake_default_density_" + std::to_string(i));
+    const auto r = runRadiosity("bake " + scene + " --out " + dir.string() +
+                                " --elements 200 --rays 32 --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    lightmaps[i] = nlohmann::json::parse(readText(dir / "bake.json"))["lightmap"];
+    fs::remove_all(dir);
+  }
+  fs::remove_all(scaled);
+  EXPECT_NE(lightmaps[0]["size_rule"].get<std::string>().find("default"), std::string::npos);
+  EXPECT_NEAR(
+      lightmaps[0]["texel_density"].get<double>() / lightmaps[1]["texel_density"].get<double>(),
+      1000.0, 1e-6);
+  EXPECT_EQ(lightmaps[0]["pages"], lightmaps[1]["pages"]);
+  // Rect sides are ceilings of chart size over texel size: equal up to rounding at a boundary.
+  for (const char* side : {"width", "height"})
+    EXPECT_NEAR(lightmaps[0][side].get<double>(), lightmaps[1][side].get<double>(),
+                0.01 * lightmaps[0][side].get<double>())
+        << side;
+  const auto texels = [](const nlohmann::json& l) {
+    return l["texels_covered"].get<double>() + l["texels_conservative"].get<double>();
+  };
+  EXPECT_NEAR(texels(lightmaps[0]), texels(lightmaps[1]), 0.01 * texels(lightmaps[0]));
+}
+
+// The baked glTF of a textured scene keeps the base colour (factor and the texture file's own
+// bytes) on TEXCOORD_0, the scene's UVs, and shows the lightmap as emissiveTexture on TEXCOORD_1;
+// the Khronos validator accepts it.
+TEST(BakedGlb, KeepsTheBaseColourTextureOnTexcoord0AndTheLightmapOnTexcoord1) {
+  const fs::path dir = scratchPath("baked_glb_texture");
+  fs::create_directories(dir);
+  ImageRgb checker(2, 2);
+  checker.pixels = {Rgb::all(0.8), Rgb::all(0.2), Rgb::all(0.2), Rgb::all(0.8)};
+  writePng((dir / "checker.png").string(), checker, ToneMap{1.0});
+  Scene scene;
+  scene.sourcePath = (dir / "quad.obj").string();
+  scene.positions = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
+  ScenePolygon quad;
+  quad.vertices = {0, 1, 2, 3};
+  quad.uvs = {{0, 0}, {3, 0}, {3, 1.5}, {0, 1.5}};  // uv = 1.5 (x, y): the checker tiles
+  scene.polygons = {quad};
+  Material material;
+  material.name = "checker";
+  material.diffuse = Rgb(0.9, 0.8, 0.7);
+  material.diffuseTexture = 0;
+  scene.materials = {material};
+  scene.textures = {loadTextureFile((dir / "checker.png").string(), TextureEncoding::Srgb)};
+  PatchMesh mesh = buildPatchMesh(scene);
+  mesh.subdivideUniform(0.1);
+  const LightmapLayout layout = packLightmapCharts(buildLightmapCharts(mesh), {0.05, 0, 2, 64});
+  const VertexInterpolation interpolation(mesh);
+  const std::vector<Rgb> radiance = interpolateVertexRadiance(
+      interpolation, std::vector<Rgb>(mesh.elementCount(), Rgb::all(M_PI)));
+  const BakedMesh baked = makeBakedMesh(mesh, interpolation, radiance, &layout, {"checker"});
+  BakedLook look = bakedBaseColours(scene, !baked.textureUvs.empty());
+  look.lightmapPages.push_back(
+      encodePng(bakeLightmap(mesh, layout, interpolation, radiance, 2).radiance, ToneMap{0.5}));
+  {
+    std::ofstream out(dir / "scene_baked.glb", std::ios::binary);
+    writeBakedGlb(out, baked, look, ToneMap{0.5});
+  }
+  validate(dir / "scene_baked.glb");
+
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, (dir / "scene_baked.glb").string()))
+      << err;
+  ASSERT_EQ(model.materials.size(), 1u);
+  const auto& m = model.materials[0];
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(m.pbrMetallicRoughness.baseColorFactor[c], material.diffuse[c], 1e-12);
+  const int baseTexture = m.pbrMetallicRoughness.baseColorTexture.index;
+  ASSERT_GE(baseTexture, 0);
+  EXPECT_EQ(m.pbrMetallicRoughness.baseColorTexture.texCoord, 0);
+  ASSERT_GE(m.emissiveTexture.index, 0);
+  EXPECT_EQ(m.emissiveTexture.texCoord, 1);
+  EXPECT_NE(m.emissiveTexture.index, baseTexture);
+  // The texture is the file itself, byte for byte.
+  const auto& image = model.images[model.textures[baseTexture].source];
+  const auto& imageView = model.bufferViews[image.bufferView];
+  const std::string file = readText(dir / "checker.png");
+  ASSERT_EQ(imageView.byteLength, file.size());
+  EXPECT_EQ(0, std::memcmp(model.buffers[0].data.data() + imageView.byteOffset, file.data(),
+                           file.size()));
+
+  const auto& prim = model.meshes[0].primitives[0];
+  EXPECT_FALSE(prim.attributes.count("COLOR_0"));
+  ASSERT_NE(prim.attributes.at("TEXCOORD_0"), prim.attributes.at("TEXCOORD_1"));
+  auto floats = [&](const char* attribute) {
+    const auto& acc = model.accessors[prim.attributes.at(attribute)];
+    const auto& view = model.bufferViews[acc.bufferView];
+    return reinterpret_cast<const float*>(model.buffers[view.buffer].data.data() + view.byteOffset +
+                                          acc.byteOffset);
+  };
+  const float* position = floats("POSITION");
+  const float* uv0 = floats("TEXCOORD_0");
+  const float* uv1 = floats("TEXCOORD_1");
+  const size_t vertices = model.accessors[prim.attributes.at("POSITION")].count;
+  ASSERT_GT(vertices, 4u);
+  for (size_t v = 0; v < vertices; ++v) {
+    // The scene's uv = 1.5 (x, y) with v flipped to glTF's top-left origin.
+    EXPECT_NEAR(uv0[2 * v], 1.5 * position[3 * v], 1e-5);
+    EXPECT_NEAR(uv0[2 * v + 1], 1.0 - 1.5 * position[3 * v + 1], 1e-5);
+    for (int k = 0; k < 2; ++k) {
+      EXPECT_GE(uv1[2 * v + k], 0.0f);
+      EXPECT_LE(uv1[2 * v + k], 1.0f);
+    }
+  }
+  fs::remove_all(dir);
 }
 
 }  // namespace

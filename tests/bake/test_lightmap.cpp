@@ -10,6 +10,7 @@
 #include "meshing/lightmap_packing.h"
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
 #include "radiosity/output/lightmap_bake.h"
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/scene/obj_loader.h"
@@ -44,12 +45,14 @@ PatchMesh spiralRamp() {
   return mesh;
 }
 
-// Which charts claim each of 4×4 sub-samples per texel: independent of the baker's rasteriser.
-int overlappingSamples(const LightmapLayout& layout) {
+// Which charts claim each of 4×4 sub-samples per texel of `page`: independent of the baker's
+// rasteriser.
+int overlappingSamples(const LightmapLayout& layout, int page = 0) {
   const int s = 4;
   std::vector<int> owner(static_cast<size_t>(layout.width * s) * layout.height * s, -1);
   int overlaps = 0;
   for (size_t e = 0; e < layout.texels.size(); ++e) {
+    if (layout.page(static_cast<int>(e)) != page) continue;
     const auto& t = layout.texels[e];
     const Vec2 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]) * s,
                hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]) * s;
@@ -74,13 +77,15 @@ int overlappingSamples(const LightmapLayout& layout) {
   return overlaps;
 }
 
+// Every rect inside its page, and no two rects of one page overlap.
 bool rectsDisjoint(const LightmapLayout& l) {
   for (size_t a = 0; a < l.rects.size(); ++a) {
     const ChartRect& r = l.rects[a];
     if (r.x < 0 || r.y < 0 || r.x + r.width > l.width || r.y + r.height > l.height) return false;
+    if (r.page < 0 || r.page >= l.pages) return false;
     for (size_t b = a + 1; b < l.rects.size(); ++b) {
       const ChartRect& q = l.rects[b];
-      if (r.x < q.x + q.width && q.x < r.x + r.width && r.y < q.y + q.height &&
+      if (q.page == r.page && r.x < q.x + q.width && q.x < r.x + r.width && r.y < q.y + q.height &&
           q.y < r.y + r.height)
         return false;
     }
@@ -230,6 +235,100 @@ TEST(LightmapBake, UnlitChartsGetValidBlackTexels) {
       EXPECT_TRUE(map.radiance.pixels[i].isZero());
     }
   EXPECT_GT(texels, 0);
+}
+
+// Charts too many for one small page go on several: each chart on one page, inside its rect, no
+// overlap on any page, every element baked on its own page only, and every texel of every page
+// either empty or owned by a chart of that page.
+TEST(LightmapPages, ChartsSpreadOverSeveralPagesWithoutOverlap) {
+  PatchMesh mesh = cornellMesh();
+  const LightmapCharts charts = buildLightmapCharts(mesh);
+  // 0.01 units per texel: each wall of the 0.55-unit box is ~56 texels (+4 of padding), so a
+  // 64² page holds one wall and the box needs many pages.
+  const LightmapLayout layout = packLightmapCharts(charts, {0.01, 0, 2, 64});
+  ASSERT_GT(layout.pages, 1);
+  EXPECT_LE(layout.width, 64);
+  EXPECT_LE(layout.height, 64);
+  EXPECT_TRUE(rectsDisjoint(layout));
+  EXPECT_DOUBLE_EQ(layout.texelSize, 0.01);
+  std::vector<int> chartsOnPage(layout.pages, 0);
+  for (const ChartRect& r : layout.rects) ++chartsOnPage[r.page];
+  for (int p = 0; p < layout.pages; ++p) {
+    EXPECT_GT(chartsOnPage[p], 0) << "page " << p << " is empty";
+    EXPECT_EQ(overlappingSamples(layout, p), 0) << "page " << p;
+  }
+
+  std::vector<Rgb> radiosity(mesh.elementCount(), Rgb::all(M_PI));
+  const VertexInterpolation interpolation(mesh);
+  const std::vector<Rgb> vertexRadiance = interpolateVertexRadiance(interpolation, radiosity);
+  std::vector<int> ownedTexels(mesh.elementCount(), 0);
+  for (int p = 0; p < layout.pages; ++p) {
+    const Lightmap map = bakeLightmap(mesh, layout, interpolation, vertexRadiance, 2, {}, p);
+    ASSERT_EQ(map.radiance.width, layout.width);
+    for (int y = 0; y < layout.height; ++y)
+      for (int x = 0; x < layout.width; ++x) {
+        const size_t i = map.index(x, y);
+        if (map.state[i] == TexelState::Empty) continue;
+        const int c = map.chart[i];
+        ASSERT_GE(c, 0);
+        const ChartRect& r = layout.rects[c];
+        ASSERT_EQ(r.page, p) << "a texel of page " << p << " holds a chart of page " << r.page;
+        ASSERT_TRUE(x >= r.x && x < r.x + r.width && y >= r.y && y < r.y + r.height);
+        if (map.element[i] >= 0) {
+          ASSERT_EQ(layout.page(map.element[i]), p);
+          ++ownedTexels[map.element[i]];
+        }
+        ASSERT_NEAR(map.radiance.pixels[i].g, 1.0, 1e-12);  // B = π everywhere: L = 1
+      }
+  }
+  for (int e = 0; e < mesh.elementCount(); ++e) ASSERT_GE(ownedTexels[e], 1) << "element " << e;
+  EXPECT_THROW(bakeLightmap(mesh, layout, interpolation, vertexRadiance, 2, {}, layout.pages),
+               CheckFailure);
+}
+
+TEST(LightmapPages, OneChartLargerThanAPageIsAnInputError) {
+  const LightmapCharts charts = buildLightmapCharts(cornellMesh());
+  // 0.005 units per texel: a wall is ~112 texels, more than a 64² page.
+  try {
+    packLightmapCharts(charts, {0.005, 0, 2, 64});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--texel-density"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LightmapPages, OnePageWhenTheChartsFit) {
+  const LightmapLayout layout =
+      packLightmapCharts(buildLightmapCharts(cornellMesh()), {0.01, 0, 2, 4096});
+  EXPECT_EQ(layout.pages, 1);
+  EXPECT_TRUE(rectsDisjoint(layout));
+}
+
+PatchMesh scaledCornellMesh(double scale) {
+  Scene scene = loadObjScene(std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box.obj");
+  for (Eigen::Vector3d& p : scene.positions) p *= scale;
+  PatchMesh mesh = buildPatchMesh(scene);
+  mesh.subdivideUniform(0.002 * scale * scale);
+  return mesh;
+}
+
+// The default texel size follows the scene: kDefaultLightmapTexels texels of geometry whatever
+// the unit, so a scene scaled ×1000 gets texels ×1000 larger and the same atlas.
+TEST(LightmapPages, DefaultTexelSizeScalesWithTheScene) {
+  const PatchMesh metres = scaledCornellMesh(1.0), millimetres = scaledCornellMesh(1000.0);
+  const double t = defaultTexelSize(metres), t1000 = defaultTexelSize(millimetres);
+  EXPECT_NEAR(t1000 / t, 1000.0, 1e-9 * 1000);
+  double area = 0;
+  for (int e = 0; e < metres.elementCount(); ++e) area += metres.area(e);
+  EXPECT_NEAR(area / (t * t), kDefaultLightmapTexels, 1e-6 * kDefaultLightmapTexels);
+  const LightmapLayout a = packLightmapCharts(buildLightmapCharts(metres), {t, 0, 2, 4096});
+  const LightmapLayout b =
+      packLightmapCharts(buildLightmapCharts(millimetres), {t1000, 0, 2, 4096});
+  EXPECT_EQ(a.pages, b.pages);
+  EXPECT_EQ(a.rects.size(), b.rects.size());
+  // Rect sides are ceilings of chart size over texel size: equal up to rounding at a boundary.
+  EXPECT_NEAR(a.width, b.width, 0.01 * a.width);
+  EXPECT_NEAR(a.height, b.height, 0.01 * a.height);
 }
 
 }  // namespace

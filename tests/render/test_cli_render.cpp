@@ -50,6 +50,49 @@ TEST_P(CliRender, EmitterPixelsHoldExactlyKeAfterTheExrRoundTrip) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, CliRender, ::testing::Values("radiosity", "path"));
 
+// Auto exposure is set by the lit surfaces in view, not by emitters: a lamp of radiance 1000 in
+// front of the Cornell box, facing the camera (so it lights nothing in the box) and covering
+// about 5% of the image, leaves the exposure as it was. Without the rule its pixels would be the
+// 99th percentile and the exposure about 1/1000.
+TEST(CliRenderExposure, AnEmitterInViewDoesNotSetTheAutoExposure) {
+  const std::string cornell = std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box";
+  const fs::path dir = scratchPath("render_exposure_lamp");
+  fs::create_directories(dir);
+  fs::copy_file(cornell + ".obj", dir / "cornell.obj");
+  fs::copy_file(cornell + ".mtl", dir / "cornell_box.mtl");
+  fs::copy_file(cornell + ".camera.json", dir / "cornell.camera.json");
+  fs::copy_file(cornell + ".obj", dir / "lamp.obj");
+  fs::copy_file(cornell + ".camera.json", dir / "lamp.camera.json");
+  {
+    std::ofstream mtl(dir / "cornell_box.mtl", std::ios::app);
+    mtl << "\nnewmtl lamp\nKd 0 0 0\nKe 1000 1000 1000\nillum 1\n";
+    std::ofstream obj(dir / "lamp.obj", std::ios::app);
+    // 0.1 × 0.1 at z = −0.2, its front towards the camera (−z): counter-clockwise seen from it.
+    obj << "\no lamp\nusemtl lamp\nv 0.18 0.08 -0.2\nv 0.08 0.08 -0.2\nv 0.08 0.18 -0.2\n"
+           "v 0.18 0.18 -0.2\nf -4 -3 -2 -1\n";
+  }
+  double exposure[2];
+  for (int i = 0; i < 2; ++i) {
+    const std::string scene = (dir / (i == 0 ? "cornell.obj" : "lamp.obj")).string();
+    const fs::path out = dir / ("out" + std::to_string(i));
+    const auto r = runRadiosity("render " + scene + " --out " + out.string() +
+                                " --method radiosity --gather 0 --elements 400 --rays 256 "
+                                "--width 64 --height 64 --spp 1 -q");
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    std::ifstream in(out / "render.json");
+    exposure[i] = nlohmann::json::parse(in)["tone_map"]["exposure"].get<double>();
+    if (i == 1) {  // the lamp is in view: ~5% of the pixels hold its radiance
+      const ImageRgb image = readExr((out / "render.exr").string());
+      size_t lamp = 0;
+      for (const Rgb& p : image.pixels) lamp += p.g == 1000.0;
+      EXPECT_GT(lamp, image.pixels.size() * 3 / 100);
+    }
+  }
+  // The two solves mesh the box a little differently (the lamp takes elements): a few percent.
+  EXPECT_NEAR(exposure[1] / exposure[0], 1.0, 0.05);
+  fs::remove_all(dir);
+}
+
 TEST(CliRenderReport, SkippedWorkIsListed) {
   const fs::path out = scratchPath("render_skips");
   const auto r = runRadiosity("render " + std::string(RADIOSITY_DATA_DIR) +
