@@ -63,7 +63,7 @@ def main():
     parser.add_argument("binary")
     parser.add_argument("scene", choices=sorted(SCENES))
     parser.add_argument("work")
-    parser.add_argument("--path-spp", type=int, default=256)
+    parser.add_argument("--path-spp", type=int, default=64)
     args = parser.parse_args()
     root = os.environ.get("RADIOSITY_SCENES", os.path.join(SOURCE, "..", "shared", "scenes"))
     relative, options = SCENES[args.scene]
@@ -104,7 +104,7 @@ def main():
         print("real_scene_test: FAILED: the path-traced image is black")
         return 1
     if sigma_p > 0.005 * mean_p:
-        print(f"real_scene_test: FAILED: the path tracer's noise is not well under 2%: raise --path-spp")
+        print("real_scene_test: FAILED: the path tracer's noise is not well under 2%: raise --path-spp")
         return 1
     if abs(mean_r - mean_p) > 0.02 * mean_p:
         print("real_scene_test: FAILED: the radiosity image's mean is not within 2% of the path tracer's")
