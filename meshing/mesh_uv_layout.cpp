@@ -29,7 +29,7 @@ double uvArea(const std::array<Eigen::Vector2d, 3>& t) {
 // The UV the element gives to one of its corner vertices.
 Eigen::Vector2d uvAt(const PatchMesh& mesh, int element, int vertex) {
   const std::array<int, 3> v = mesh.cornerVertices(element);
-  const std::array<Eigen::Vector2d, 3> uv = mesh.cornerUvs(element);
+  const std::array<Eigen::Vector2d, 3> uv = mesh.cornerLightmapUvs(element);
   for (int k = 0; k < 3; ++k)
     if (v[k] == vertex) return uv[k];
   RAD_CHECK_MSG(false, "uvAt: the vertex is not a corner of the element");
@@ -39,7 +39,7 @@ Eigen::Vector2d uvAt(const PatchMesh& mesh, int element, int vertex) {
 }  // namespace
 
 LightmapLayout layoutFromMeshUvs(const PatchMesh& mesh, int width, int height, int padding) {
-  RAD_CHECK_MSG(mesh.hasUvs(), "layoutFromMeshUvs: the mesh has no UVs");
+  RAD_CHECK_MSG(mesh.hasLightmapUvs(), "layoutFromMeshUvs: the mesh has no lightmap UVs");
   RAD_CHECK_GE(width, 1);
   RAD_CHECK_GE(height, 1);
   const int elements = mesh.elementCount();
@@ -77,7 +77,7 @@ LightmapLayout layoutFromMeshUvs(const PatchMesh& mesh, int width, int height, i
       layout.rects.push_back({width, height, 0, 0, false});  // grown below
     }
     layout.chartOfElement[e] = chart;
-    const std::array<Eigen::Vector2d, 3> uv = mesh.cornerUvs(e);
+    const std::array<Eigen::Vector2d, 3> uv = mesh.cornerLightmapUvs(e);
     for (int k = 0; k < 3; ++k)
       layout.texels[e][k] = Eigen::Vector2d(uv[k].x() * width, (1 - uv[k].y()) * height);
     surfaceArea += mesh.area(e);
@@ -102,7 +102,7 @@ int atlasSideForTexelSize(const PatchMesh& mesh, double texelSize, int maxSide) 
   RAD_CHECK_GT(texelSize, 0.0);
   double surfaceArea = 0, uvTotal = 0;
   for (int e = 0; e < mesh.elementCount(); ++e)
-    surfaceArea += mesh.area(e), uvTotal += uvArea(mesh.cornerUvs(e));
+    surfaceArea += mesh.area(e), uvTotal += uvArea(mesh.cornerLightmapUvs(e));
   const double side = std::ceil(std::sqrt(surfaceArea / uvTotal) / texelSize);
   if (!(side <= maxSide))
     throw InputError("texel size " + std::to_string(texelSize) + " needs a lightmap larger than " +

@@ -32,11 +32,19 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
   for (const PatchPolygon& polygon : polygons) {
     RAD_CHECK_MSG(polygon.uvs.empty() || polygon.uvs.size() == polygon.vertices.size(),
                   "PatchMesh: a polygon needs one UV per corner");
+    RAD_CHECK_MSG(
+        polygon.lightmapUvs.empty() || polygon.lightmapUvs.size() == polygon.vertices.size(),
+        "PatchMesh: a polygon needs one lightmap UV per corner");
   }
   const auto withUvs = std::count_if(polygons.begin(), polygons.end(),
                                      [](const PatchPolygon& p) { return !p.uvs.empty(); });
-  anyUvs_ = withUvs > 0;
-  allUvs_ = anyUvs_ && withUvs == static_cast<long>(polygons.size());
+  const auto withLightmapUvs =
+      std::count_if(polygons.begin(), polygons.end(), [](const PatchPolygon& p) {
+        return !p.uvs.empty() || !p.lightmapUvs.empty();
+      });
+  anyUvs_ = withLightmapUvs > 0;
+  allUvs_ = withUvs > 0 && withUvs == static_cast<long>(polygons.size());
+  allLightmapUvs_ = anyUvs_ && withLightmapUvs == static_cast<long>(polygons.size());
   if (anyUvs_) mesh_.add_property(uvs_, "uv");
 
   std::vector<TriMesh::VertexHandle> handles(positions.size());
@@ -59,15 +67,19 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
       boundsMax_ = boundsMax_.cwiseMax(positions[v]);
     }
     const int patch = patchCount_++;
-    const bool hasUvs = !polygon.uvs.empty();
+    const std::vector<Eigen::Vector2d>& lightmapSet =
+        polygon.lightmapUvs.empty() ? polygon.uvs : polygon.lightmapUvs;
+    auto cornersOf = [](const std::vector<Eigen::Vector2d>& set, const std::array<int, 3>& t) {
+      return set.empty() ? std::array<Eigen::Vector2d, 3>{}
+                         : std::array<Eigen::Vector2d, 3>{set[t[0]], set[t[1]], set[t[2]]};
+    };
     for (const auto& t : triangulatePolygon(points)) {
-      const std::array<Eigen::Vector2d, 3> uvs =
-          hasUvs ? std::array<Eigen::Vector2d, 3>{polygon.uvs[t[0]], polygon.uvs[t[1]],
-                                                  polygon.uvs[t[2]]}
-                 : std::array<Eigen::Vector2d, 3>{};
+      const std::array<Eigen::Vector2d, 3> uvs = cornersOf(polygon.uvs, t),
+                                           lightmapUvs = cornersOf(lightmapSet, t);
       addTriangle(handles[polygon.vertices[t[0]]], handles[polygon.vertices[t[1]]],
                   handles[polygon.vertices[t[2]]], patch, polygon.material,
-                  hasUvs ? uvs.data() : nullptr);
+                  polygon.uvs.empty() ? nullptr : uvs.data(),
+                  lightmapSet.empty() ? nullptr : lightmapUvs.data());
     }
   }
   inputTriangles_ = elementCount();
@@ -75,7 +87,7 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
 
 void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
                             TriMesh::VertexHandle c, int patch, int material,
-                            const Eigen::Vector2d* uvs) {
+                            const Eigen::Vector2d* uvs, const Eigen::Vector2d* lightmapUvs) {
   TriMesh::FaceHandle f = mesh_.add_face(a, b, c);
   if (!f.is_valid()) {
     // Non-manifold or inconsistently wound contact with a neighbour: give this triangle its own
@@ -86,13 +98,17 @@ void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
     f = mesh_.add_face(a, b, c);
     if (!f.is_valid()) throw std::runtime_error("PatchMesh: OpenMesh rejected a triangle");
   }
-  if (uvs) {
+  if (anyUvs_) {
     FaceUvs& face = mesh_.property(uvs_, f);
+    face = FaceUvs();
     face.vertex = {a.idx(), b.idx(), c.idx()};
-    for (int k = 0; k < 3; ++k) face.uv[2 * k] = uvs[k].x(), face.uv[2 * k + 1] = uvs[k].y();
-    face.valid = true;
-  } else if (anyUvs_) {
-    mesh_.property(uvs_, f).valid = false;
+    if (uvs)
+      for (int k = 0; k < 3; ++k) face.uv[2 * k] = uvs[k].x(), face.uv[2 * k + 1] = uvs[k].y();
+    if (lightmapUvs)
+      for (int k = 0; k < 3; ++k)
+        face.lightmapUv[2 * k] = lightmapUvs[k].x(), face.lightmapUv[2 * k + 1] = lightmapUvs[k].y();
+    face.valid = uvs != nullptr;
+    face.lightmapValid = lightmapUvs != nullptr;
   }
   mesh_.property(patchId_, f) = patch;
   mesh_.property(materialId_, f) = material;
@@ -122,14 +138,25 @@ std::array<Eigen::Vector3d, 3> PatchMesh::corners(int element) const {
 
 std::array<Eigen::Vector2d, 3> PatchMesh::cornerUvs(int element) const {
   RAD_CHECK_MSG(hasUvs(element), "PatchMesh::cornerUvs: the element has no UVs");
+  return cornerSet(element, false);
+}
+
+std::array<Eigen::Vector2d, 3> PatchMesh::cornerLightmapUvs(int element) const {
+  RAD_CHECK_MSG(anyUvs_ && mesh_.property(uvs_, face(element)).lightmapValid,
+                "PatchMesh::cornerLightmapUvs: the element has no lightmap UVs");
+  return cornerSet(element, true);
+}
+
+std::array<Eigen::Vector2d, 3> PatchMesh::cornerSet(int element, bool lightmap) const {
   const FaceUvs& face = mesh_.property(uvs_, this->face(element));
+  const std::array<double, 6>& set = lightmap ? face.lightmapUv : face.uv;
   const std::array<int, 3> v = cornerVertices(element);
   std::array<Eigen::Vector2d, 3> uv;
   for (int k = 0; k < 3; ++k) {
     const int j = static_cast<int>(std::find(face.vertex.begin(), face.vertex.end(), v[k]) -
                                    face.vertex.begin());
     RAD_CHECK_MSG(j < 3, "PatchMesh::cornerUvs: UVs out of step with the faces");
-    uv[k] = {face.uv[2 * j], face.uv[2 * j + 1]};
+    uv[k] = {set[2 * j], set[2 * j + 1]};
   }
   return uv;
 }
@@ -201,7 +228,7 @@ void PatchMesh::splitEdge(TriMesh::EdgeHandle e) {
     touched_.push_back(f.idx());
     mesh_.property(level_, f) += 1;
     updateArea(f);
-    if (hasUvs(f.idx())) splitUvs(f, from, to, mid.idx());
+    if (anyUvs_) splitUvs(f, from, to, mid.idx());
   }
 }
 
@@ -209,20 +236,26 @@ void PatchMesh::splitUvs(TriMesh::FaceHandle f, int from, int to, int mid) {
   // The child still holds its parent's UVs: its corners are the parent's, except the new vertex
   // in the middle of the split edge, whose UV is the mean of that edge's two ends in the parent.
   const FaceUvs parent = mesh_.property(uvs_, f);
-  auto parentUv = [&](int vertex, int axis) {
+  if (!parent.valid && !parent.lightmapValid) return;
+  auto parentUv = [&](const std::array<double, 6>& set, int vertex, int axis) {
     const int j = static_cast<int>(std::find(parent.vertex.begin(), parent.vertex.end(), vertex) -
                                    parent.vertex.begin());
     RAD_CHECK_MSG(j < 3, "PatchMesh: a split face lost its parent's corner");
-    return parent.uv[2 * j + axis];
+    return set[2 * j + axis];
   };
   FaceUvs child;
-  child.valid = true;
+  child.valid = parent.valid;
+  child.lightmapValid = parent.lightmapValid;
   int k = 0;
   for (auto vh : mesh_.fv_range(f)) {
     child.vertex[k] = vh.idx();
     for (int axis = 0; axis < 2; ++axis)
-      child.uv[2 * k + axis] = vh.idx() == mid ? 0.5 * (parentUv(from, axis) + parentUv(to, axis))
-                                               : parentUv(vh.idx(), axis);
+      for (auto [from_set, to_set] : {std::pair{&parent.uv, &child.uv},
+                                      std::pair{&parent.lightmapUv, &child.lightmapUv}})
+        (*to_set)[2 * k + axis] =
+            vh.idx() == mid
+                ? 0.5 * (parentUv(*from_set, from, axis) + parentUv(*from_set, to, axis))
+                : parentUv(*from_set, vh.idx(), axis);
     ++k;
   }
   mesh_.property(uvs_, f) = child;

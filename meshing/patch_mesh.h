@@ -18,14 +18,20 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<PatchMeshTraits>;
 // One input polygon: the unit of material and of the scene's description.
 struct PatchPolygon {
   PatchPolygon() = default;
-  PatchPolygon(std::vector<int> vertices, int material, std::vector<Eigen::Vector2d> uvs = {})
-      : vertices(std::move(vertices)), material(material), uvs(std::move(uvs)) {}
+  PatchPolygon(std::vector<int> vertices, int material, std::vector<Eigen::Vector2d> uvs = {},
+               std::vector<Eigen::Vector2d> lightmapUvs = {})
+      : vertices(std::move(vertices)),
+        material(material),
+        uvs(std::move(uvs)),
+        lightmapUvs(std::move(lightmapUvs)) {}
 
   std::vector<int> vertices;  // indices into the positions array, counter-clockwise from the front
   int material = 0;
   // Texture coordinates per corner (the scene's own UVs), or empty: polygons with and without
   // them may be mixed.
   std::vector<Eigen::Vector2d> uvs;
+  // A second set for lightmaps (glTF's TEXCOORD_1), or empty: then `uvs` serve as that set too.
+  std::vector<Eigen::Vector2d> lightmapUvs;
 };
 
 // The meshed scene: patches (input polygons) split into triangular elements, kept conforming
@@ -59,6 +65,10 @@ class PatchMesh {
   // polygon's triangles: a vertex made by bisection takes the mean of its edge's two ends.
   // Requires hasUvs(element).
   std::array<Eigen::Vector2d, 3> cornerUvs(int element) const;
+  // The same for the lightmap set (a polygon's lightmapUvs, else its uvs): whether every element
+  // has it (bake --use-scene-uvs needs that), and its corners. Requires hasLightmapUvs().
+  bool hasLightmapUvs() const { return allLightmapUvs_; }
+  std::array<Eigen::Vector2d, 3> cornerLightmapUvs(int element) const;
   // How many times the element's ancestry was bisected (0 for the patch's own triangles).
   int level(int element) const { return mesh_.property(level_, face(element)); }
 
@@ -113,13 +123,18 @@ class PatchMesh {
  private:
   // Per-face texture coordinates, keyed by vertex: the corners of a face are found by walking
   // its half-edges, whose starting corner an edge split may change.
+  // Both sets share the corner keys; the lightmap set follows the texture set through splits.
   struct FaceUvs {
     std::array<int, 3> vertex{};
-    std::array<double, 6> uv{};  // (u, v) per entry of `vertex`
+    std::array<double, 6> uv{};          // (u, v) per entry of `vertex`: texture set
+    std::array<double, 6> lightmapUv{};  // the same for the lightmap set
     bool valid = false;          // false: the face's polygon had no texture coordinates
+    bool lightmapValid = false;  // false: it had no lightmap coordinates either
   };
+  std::array<Eigen::Vector2d, 3> cornerSet(int element, bool lightmap) const;
   void addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b, TriMesh::VertexHandle c,
-                   int patch, int material, const Eigen::Vector2d* uvs);
+                   int patch, int material, const Eigen::Vector2d* uvs,
+                   const Eigen::Vector2d* lightmapUvs);
   TriMesh::EdgeHandle longestEdge(TriMesh::FaceHandle f) const;
   void refineAcross(TriMesh::FaceHandle f, int depth);
   void splitEdge(TriMesh::EdgeHandle e);
@@ -140,7 +155,7 @@ class PatchMesh {
   bool shootersMarked_ = false;
   OpenMesh::FPropHandleT<double> area_;
   OpenMesh::FPropHandleT<FaceUvs> uvs_;  // only when anyUvs_
-  bool anyUvs_ = false, allUvs_ = false;
+  bool anyUvs_ = false, allUvs_ = false, allLightmapUvs_ = false;
   int patchCount_ = 0;
   int inputTriangles_ = 0;
   // Faces whose shape changed in the last splitEdge/flipEdge calls (cleared by their callers).

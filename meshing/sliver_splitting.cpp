@@ -54,11 +54,14 @@ void PatchMesh::flipEdge(TriMesh::EdgeHandle e) {
   const auto h0 = mesh_.halfedge_handle(e, 0), h1 = mesh_.halfedge_handle(e, 1);
   const auto f0 = mesh_.face_handle(h0), f1 = mesh_.face_handle(h1);
   // Both faces lie in one patch, where a vertex has one UV: keep them by vertex across the flip.
-  std::map<int, std::array<double, 2>> uvOf;
-  if (hasUvs_)
+  std::map<int, std::array<double, 4>> uvOf;  // texture (u, v), lightmap (u, v)
+  const FaceUvs before = anyUvs_ ? mesh_.property(uvs_, f0) : FaceUvs();
+  if (anyUvs_)
     for (auto f : {f0, f1}) {
       const FaceUvs& face = mesh_.property(uvs_, f);
-      for (int k = 0; k < 3; ++k) uvOf[face.vertex[k]] = {face.uv[2 * k], face.uv[2 * k + 1]};
+      for (int k = 0; k < 3; ++k)
+        uvOf[face.vertex[k]] = {face.uv[2 * k], face.uv[2 * k + 1], face.lightmapUv[2 * k],
+                                face.lightmapUv[2 * k + 1]};
     }
   const int level = std::max(mesh_.property(level_, f0), mesh_.property(level_, f1));
   mesh_.flip(e);
@@ -66,14 +69,17 @@ void PatchMesh::flipEdge(TriMesh::EdgeHandle e) {
     touched_.push_back(f.idx());
     mesh_.property(level_, f) = level;
     updateArea(f);
-    if (!hasUvs_) continue;
+    if (!anyUvs_) continue;
     FaceUvs face;
+    face.valid = before.valid;
+    face.lightmapValid = before.lightmapValid;
     int k = 0;
     for (auto vh : mesh_.fv_range(f)) {
       const auto uv = uvOf.find(vh.idx());
       RAD_CHECK_MSG(uv != uvOf.end(), "PatchMesh: a flipped face gained an unknown corner");
       face.vertex[k] = vh.idx();
       face.uv[2 * k] = uv->second[0], face.uv[2 * k + 1] = uv->second[1];
+      face.lightmapUv[2 * k] = uv->second[2], face.lightmapUv[2 * k + 1] = uv->second[3];
       ++k;
     }
     mesh_.property(uvs_, f) = face;

@@ -18,10 +18,14 @@ BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interp
   // chart a vertex has one UV; a scene's UV island may still cut a vertex (a seam ending inside
   // the island), and texture seams cut vertices too.
   std::map<std::tuple<int, int, double, double, double, double>, int> index;
+  // Texture UVs go out where any element has them (zero on those without: their materials have
+  // no texture to look up).
+  bool anyTextureUvs = false;
+  for (int e = 0; e < mesh.elementCount() && !anyTextureUvs; ++e) anyTextureUvs = mesh.hasUvs(e);
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const int chart = layout ? layout->chartOfElement[e] : 0;
     const std::array<Eigen::Vector2d, 3> textureUvs =
-        mesh.hasUvs() ? mesh.cornerUvs(e) : std::array<Eigen::Vector2d, 3>{};
+        mesh.hasUvs(e) ? mesh.cornerUvs(e) : std::array<Eigen::Vector2d, 3>{};
     std::array<int, 3> tri;
     for (int k = 0; k < 3; ++k) {
       const int v = interpolation.triangle(e)[k];
@@ -36,7 +40,7 @@ BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interp
         out.normals.push_back(interpolation.normal(v));
         out.radiance.push_back(vertexRadiance[v]);
         if (layout) out.uvs.push_back(uv);
-        if (mesh.hasUvs()) out.textureUvs.push_back(textureUv);
+        if (anyTextureUvs) out.textureUvs.push_back(textureUv);
       }
       tri[k] = it->second;
     }

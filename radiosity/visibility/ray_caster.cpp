@@ -44,8 +44,8 @@ RayCaster::RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMoti
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const int material = mesh.material(e);
     bool holes = coverages_[static_cast<std::size_t>(material)].hasHoles();
-    holesWithoutUvs |= holes && !mesh.hasUvs();
-    holes = holes && mesh.hasUvs();
+    holesWithoutUvs |= holes && !mesh.hasUvs(e);
+    holes = holes && mesh.hasUvs(e);
     if (!twoSided[static_cast<std::size_t>(mesh.patch(e))] && !holes) continue;
     FilteredElement f;
     f.element = e;
@@ -59,7 +59,7 @@ RayCaster::RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMoti
     filtered_.push_back(f);
   }
   if (holesWithoutUvs)
-    logWarning("cut-outs are opaque in this scene: not every polygon has texture coordinates");
+    logWarning("cut-outs are opaque where their polygons have no texture coordinates");
   try {
     build(mesh, motion);
   } catch (...) {

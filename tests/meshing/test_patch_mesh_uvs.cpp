@@ -83,5 +83,42 @@ TEST(PatchMeshUvs, PolygonsWithAndWithoutUvsMix) {
   }
 }
 
+// A second, lightmap set (glTF's TEXCOORD_1) rides along with the texture set through bisection,
+// sliver splitting and its flips: each stays its own affine map of position.
+TEST(PatchMeshUvs, TheLightmapSetFollowsItsOwnAffineMapBesideTheTextureSet) {
+  const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {8, 0, 0}, {8, 0.2, 0}, {0, 0.2, 0}};
+  auto lightmapOf = [](const Eigen::Vector3d& q) {
+    return Eigen::Vector2d(0.7 - 0.05 * q.x(), 0.1 + 2.0 * q.y());
+  };
+  std::vector<PatchPolygon> polygons = {{{0, 1, 2, 3}, 0, {}, {}}};
+  for (int v : polygons[0].vertices) {
+    polygons[0].uvs.push_back(uvOf(0, p[v]));
+    polygons[0].lightmapUvs.push_back(lightmapOf(p[v]));
+  }
+  PatchMesh mesh(p, polygons);
+  mesh.splitSlivers(4.0, 0.05);  // a 40:1 strip: bisections and Delaunay flips
+  mesh.subdivideUniform(0.02);
+  ASSERT_TRUE(mesh.hasUvs());
+  ASSERT_TRUE(mesh.hasLightmapUvs());
+  ASSERT_GT(mesh.elementCount(), 40);
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const auto corners = mesh.corners(e);
+    const auto uv = mesh.cornerUvs(e), lightmap = mesh.cornerLightmapUvs(e);
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_NEAR((uv[k] - uvOf(0, corners[k])).norm(), 0, 1e-12) << "element " << e;
+      ASSERT_NEAR((lightmap[k] - lightmapOf(corners[k])).norm(), 0, 1e-12) << "element " << e;
+    }
+  }
+}
+
+// Without a lightmap set, the texture set is the lightmap set.
+TEST(PatchMeshUvs, WithoutALightmapSetTheTextureUvsServe) {
+  const PatchMesh mesh = makeUvL();
+  ASSERT_TRUE(mesh.hasLightmapUvs());
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(mesh.cornerLightmapUvs(e)[k], mesh.cornerUvs(e)[k]);
+}
+
 }  // namespace
 }  // namespace rad
