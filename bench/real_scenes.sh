@@ -25,7 +25,7 @@ mkdir -p "$WORK" bench/results
 # The sky and sun that light Sponza (the atrium ships with no light): the generated atrium's.
 SPONZA_LIGHTS=(--sky 0.35 0.45 0.65 --sun 0.3 -1 0.25 8 7.6 6.8)
 
-echo "scene,triangles,command,options,exit,wall_s,peak_rss_mib" >"$CSV.tmp"
+echo "scene,faces,command,options,exit,wall_s,peak_rss_mib" >"$CSV.tmp"
 measure() {  # measure NAME SCENE COMMAND OPTIONS...
   local name=$1 scene=$2 command=$3
   shift 3
@@ -34,13 +34,14 @@ measure() {  # measure NAME SCENE COMMAND OPTIONS...
   mkdir -p "$dir"
   echo "real_scenes: $name: radiosity $command $scene --out $dir $*" >&2
   local status=0
-  timeout "$LIMIT" /usr/bin/time -v "$RADIOSITY" "$command" "$scene" --out "$dir" "$@" >"$log" 2>&1 || status=$?
-  local wall rss triangles
+  # timeout inside /usr/bin/time, so that a run stopped at the limit still reports its time and memory.
+  /usr/bin/time -v timeout "$LIMIT" "$RADIOSITY" "$command" "$scene" --out "$dir" "$@" >"$log" 2>&1 || status=$?
+  local wall rss faces
   # /usr/bin/time's "Elapsed (wall clock) time (h:mm:ss or m:ss): 1:02.34".
   wall=$(awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, t, ":"); s = 0; for (i = 1; i <= n; i++) s = s * 60 + t[i]; print s}' "$log")
   rss=$(awk -F': ' '/Maximum resident set size/ {printf "%.0f", $2 / 1024}' "$log")
-  triangles=$(grep -c '^f ' "$scene" || true)
-  echo "$name,$triangles,$command,\"$*\",$status,${wall:-},${rss:-}" >>"$CSV.tmp"
+  faces=$(grep -c '^f ' "$scene" || true)
+  echo "$name,$faces,$command,\"$*\",$status,${wall:-},${rss:-}" >>"$CSV.tmp"
   echo "real_scenes: $name $command: exit $status, ${wall:-?} s, ${rss:-?} MiB" >&2
 }
 
