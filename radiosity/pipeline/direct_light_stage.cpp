@@ -65,15 +65,16 @@ Rgb fromSky(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
   const Frame frame(n);
   Rng rng(key);
   const double inf = std::numeric_limits<double>::infinity();
-  int open = 0;
+  Rgb open;  // the radiance of the rays that reach the sky
   for (int k = 0; k < kSkyRays; ++k) {
     const double u1 = (k % 8 + rng.uniform()) / 8, u2 = (k / 8 + rng.uniform()) / 8;
     const Eigen::Vector3d w = frame.toWorld(cosineWeightedDirection(u1, u2));
-    if (skyRadiance(light, w).isZero()) continue;  // below the horizon: the ground is black
+    const Rgb radiance = skyRadiance(light, w);
+    if (radiance.isZero()) continue;  // below the horizon: the ground is black
     ++raysCast;
-    open += !rays.occluded(rays.liftOff(x, n, w), w, inf);
+    if (!rays.occluded(rays.liftOff(x, n, w), w, inf)) open += radiance;
   }
-  return light.radiance * (M_PI * open / kSkyRays);
+  return open * (M_PI / kSkyRays);
 }
 
 }  // namespace

@@ -25,8 +25,9 @@ constexpr int kSunDiscRays = 16;
 // `n` (only its front receives), shadow rays through `rays`. Point: I cosθ / r²; spot: the same
 // times 0 outside the outer cone, 1 inside the inner cone, smoothstep in cos between; directional:
 // E cosθ (one ray, or kSunDiscRays stratified over its disc when its angular diameter > 0); sky:
-// πL × the fraction of kSkyRays cosine-weighted rays that leave the scene above the horizon of
-// `up`. `key` seeds the stratified jitter; `raysCast` counts the rays.
+// π × the mean, over kSkyRays cosine-weighted rays, of the sky's radiance along those that leave
+// the scene above the horizon of `up` (πL × their fraction for a uniform sky). `key` seeds the
+// stratified jitter; `raysCast` counts the rays.
 Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
                      const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast);
 

@@ -144,8 +144,8 @@ Rgb SceneLights::unshadowedIrradiance(const Eigen::Vector3d& x, const Eigen::Vec
       case LightType::Directional:
         sum += light.irradiance * std::max(0.0, n.dot(-light.direction));
         break;
-      case LightType::Sky:  // a uniform upper hemisphere over a plane tilted by α: πL (1 + cosα)/2
-        sum += light.radiance * (M_PI * (1 + n.dot(light.up)) / 2);
+      case LightType::Sky:
+        sum += skyIrradiance(light, n);
         break;
     }
   }

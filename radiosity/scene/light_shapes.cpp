@@ -44,7 +44,21 @@ bool insideSunDisc(const Light& light, const Eigen::Vector3d& direction) {
 }
 
 Rgb skyRadiance(const Light& light, const Eigen::Vector3d& direction) {
-  return direction.dot(light.up) > 0 ? light.radiance : Rgb();
+  const double cosZenith = direction.dot(light.up);
+  if (!(cosZenith > 0)) return {};
+  return light.skyModel == SkyModel::CieOvercast ? light.radiance * ((1 + 2 * cosZenith) / 3)
+                                                 : light.radiance;
+}
+
+Rgb skyIrradiance(const Light& light, const Eigen::Vector3d& n) {
+  const double cosA = std::clamp(n.dot(light.up), -1.0, 1.0);
+  const double uniform = M_PI * (1 + cosA) / 2;  // ∫ cos over the lune
+  if (light.skyModel == SkyModel::Uniform) return light.radiance * uniform;
+  // ∫ cosθ_zenith · cos over the lune, in coordinates about the axis up × n: (2/3)(sin α +
+  // (π − α) cos α).
+  const double a = std::acos(cosA);
+  const double zenithWeighted = 2.0 / 3 * (std::sin(a) + (M_PI - a) * cosA);
+  return light.radiance * ((uniform + 2 * zenithWeighted) / 3);
 }
 
 }  // namespace rad

@@ -28,8 +28,12 @@ Eigen::Vector3d sunDirection(const Light& light, double u1, double u2);
 // Whether the unit `direction` (from a surface towards the sky) lies within the sun's disc.
 bool insideSunDisc(const Light& light, const Eigen::Vector3d& direction);
 
-// The sky's radiance along the unit `direction` (from a surface towards the sky): its radiance
-// above the horizon of `up`, black ground below.
+// The sky's radiance along the unit `direction` (from a surface towards the sky): its model's
+// radiance above the horizon of `up` (lights.h), black ground below.
 Rgb skyRadiance(const Light& light, const Eigen::Vector3d& direction);
+// The irradiance from the whole sky, unshadowed, on a plane of unit normal `n` at angle α to `up`
+// (integrated over the lune above both the horizon and the plane): uniform πL (1 + cos α)/2;
+// CIE overcast L_z [π (1 + cos α)/6 + 4/9 (sin α + (π − α) cos α)], 7πL_z/9 facing up.
+Rgb skyIrradiance(const Light& light, const Eigen::Vector3d& n);
 
 }  // namespace rad

@@ -123,9 +123,25 @@ Light readLight(const LightReader& r, const std::string& type) {
         r.fail("angular_diameter_degrees", "must be in [0, 90) degrees");
     }
   } else if (type == "sky") {
-    r.allowOnly({"type", "radiance", "up", "comment"});
+    r.allowOnly({"type", "model", "radiance", "zenith_radiance", "up", "comment"});
     light.type = LightType::Sky;
-    light.radiance = r.colour("radiance");
+    std::string model = "uniform";
+    if (r.has("model")) {
+      if (!r.at("model").is_string()) r.fail("model", "must be a string (uniform, cie_overcast)");
+      model = r.at("model").get<std::string>();
+    }
+    // Each model names its one radiance for what it is: the sky's, or the zenith's.
+    const char* key = "radiance";
+    if (model == "cie_overcast") {
+      light.skyModel = SkyModel::CieOvercast;
+      key = "zenith_radiance";
+    } else if (model != "uniform") {
+      r.fail("model", "unknown sky model \"" + model + "\" (known: uniform, cie_overcast)");
+    }
+    const char* other = model == "cie_overcast" ? "radiance" : "zenith_radiance";
+    if (r.has(other))
+      r.fail(other, "a " + model + " sky takes \"" + key + "\", not \"" + other + "\"");
+    light.radiance = r.colour(key);
     if (r.has("up")) light.up = r.direction("up");
   } else if (type == "environment") {
     r.fail("type",

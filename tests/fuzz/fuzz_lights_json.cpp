@@ -34,6 +34,8 @@ void checkLight(const rad::Light& l) {
       l.cosOuter >= -1e-12 && l.cosOuter < 1 && l.cosInner >= l.cosOuter && l.cosInner < 1 + 1e-12,
       "bad spot cones");
   check(l.angularDiameterDegrees >= 0 && l.angularDiameterDegrees < 90, "bad angular diameter");
+  check(l.type == rad::LightType::Sky || l.skyModel == rad::SkyModel::Uniform,
+        "a sky model on a light that is no sky");
 }
 
 }  // namespace

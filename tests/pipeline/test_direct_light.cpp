@@ -195,6 +195,25 @@ TEST(DirectLight, UniformSkyOnAnOpenUpwardPlaneIsRhoPiL) {
     expectNear(result.solution.radiosity[e], kRho * light.radiance * M_PI, 1e-12, e);
 }
 
+// CIE overcast, L(θ) = L_z (1 + 2 cos θ)/3: E = 7πL_z/9 on an open upward plane. Each ray's
+// value π L(θ) lies in [π/3, π] L_z, so its standard deviation is at most π/3 L_z, and the mean
+// over all elements' rays (64 per receiver point, 3 points each) lies within 4 such σ of it.
+TEST(DirectLight, CieOvercastSkyOnAnOpenUpwardPlaneIsSevenNinthsRhoPiLzWithinFourSigma) {
+  Light light = sky({1, 2, 3});
+  light.skyModel = SkyModel::CieOvercast;
+  const SolveResult result = solveScene(floorScene({light}), quickOptions());
+  const Solution& s = result.solution;
+  Rgb mean;
+  for (int e = 0; e < s.mesh->elementCount(); ++e) mean += s.radiosity[e];
+  mean = mean / s.mesh->elementCount();
+  const double rays = 64.0 * 3 * s.mesh->elementCount();
+  for (int c = 0; c < 3; ++c) {
+    const double want = kRho[c] * light.radiance[c] * 7 * M_PI / 9;
+    EXPECT_NEAR(mean[c], want, 4 * kRho[c] * light.radiance[c] * M_PI / 3 / std::sqrt(rays))
+        << "channel " << c;
+  }
+}
+
 TEST(DirectLight, UniformSkyOnALoneVerticalQuadIsHalfRhoPiLWithinFourSigma) {
   Scene scene = sceneWith({sky({1, 1, 1})});
   addQuad(scene, {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}});  // facing +z

@@ -243,6 +243,29 @@ TEST(RenderLights, UniformSkyOnALoneVerticalQuadIsHalfRhoL) {
       expectRadiance(estimate(*method, eye, x, 256, 6), 0.5 * kRho * light.radiance, name);
 }
 
+// CIE overcast, L(θ) = L_z (1 + 2 cos θ)/3: E = 7πL_z/9 facing up, L_z (π/6 + 4/9) on a vertical
+// plane (light_shapes.h), so radiance ρE/π.
+TEST(RenderLights, CieOvercastSkyOnAnUpwardAndAVerticalPlane) {
+  Light light = sky({1, 2, 3});
+  light.skyModel = SkyModel::CieOvercast;
+  {
+    const Eigen::Vector3d eye(0, 2.5, 1.5);
+    const auto w = solveWorld(floorScene({light}), eye);
+    for (const auto& [name, method] : allMethods(*w))
+      for (const Eigen::Vector3d& x : grid({1, 0, 0}, {0, 0, 1}))
+        expectRadiance(estimate(*method, eye, x, 64, 8), kRho * light.radiance * (7.0 / 9),
+                       name + " upward");
+  }
+  Scene scene = sceneWith({light});
+  addQuad(scene, {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}});
+  const Eigen::Vector3d eye(0.3, 0.2, 3);
+  const auto w = solveWorld(scene, eye);
+  for (const auto& [name, method] : allMethods(*w))
+    for (const Eigen::Vector3d& x : grid({1, 0, 0}, {0, 1, 0}))
+      expectRadiance(estimate(*method, eye, x, 256, 9),
+                     kRho * light.radiance * ((M_PI / 6 + 4.0 / 9) / M_PI), name + " vertical");
+}
+
 TEST(RenderLights, RaysThatLeaveTheSceneSeeTheSkyAboveTheHorizonAndTheSunsDisc) {
   const Light theSky = sky({1, 2, 3});
   const Light theSun = sun({1000, 1000, 1000}, 10);

@@ -74,6 +74,50 @@ TEST(Lights, ErrorsNameTheFileLineAndPointer) {
   fs::remove_all(dir);
 }
 
+TEST(Lights, ReadsTheCieOvercastSkyAndRefusesUnknownModelsAndTheOtherModelsRadiance) {
+  const fs::path dir = scratch("overcast");
+  const std::string path = (dir / "l.json").string();
+  std::ofstream(path) << R"({"lights": [
+    {"type": "sky", "model": "cie_overcast", "zenith_radiance": [1, 2, 3]},
+    {"type": "sky", "model": "uniform", "radiance": [4, 5, 6]}]})";
+  const std::vector<Light> lights = loadLights(path);
+  ASSERT_EQ(lights.size(), 2u);
+  EXPECT_EQ(lights[0].skyModel, SkyModel::CieOvercast);
+  EXPECT_EQ(lights[0].radiance.b, 3);
+  EXPECT_EQ(lights[1].skyModel, SkyModel::Uniform);
+  struct Bad {
+    std::string text, pointer, phrase;
+  };
+  for (const Bad& bad : std::vector<Bad>{
+           {"{\"lights\": [\n{\"type\": \"sky\", \"model\": \"cie_clear\", \"radiance\": [1, 1, "
+            "1]}]}",
+            "/lights/0/model", "unknown sky model \"cie_clear\""},
+           {"{\"lights\": [\n{\"type\": \"sky\", \"model\": 3, \"radiance\": [1, 1, 1]}]}",
+            "/lights/0/model", "must be a string"},
+           {"{\"lights\": [\n{\"type\": \"sky\", \"model\": \"cie_overcast\", \"radiance\": [1, 1, "
+            "1]}]}",
+            "/lights/0/radiance", "takes \"zenith_radiance\""},
+           {"{\"lights\": [\n{\"type\": \"sky\", \"zenith_radiance\": [1, 1, 1]}]}",
+            "/lights/0/zenith_radiance", "takes \"radiance\""},
+           {"{\"lights\": [\n{\"type\": \"sky\", \"model\": \"cie_overcast\"}]}", "/lights/0",
+            "missing key \"zenith_radiance\""},
+           {"{\"lights\": [\n{\"type\": \"sky\", \"model\": \"cie_overcast\", "
+            "\"zenith_radiance\": [1, -1, 1]}]}",
+            "/lights/0/zenith_radiance", "must not be negative"}}) {
+    std::ofstream(path) << bad.text;
+    try {
+      loadLights(path);
+      ADD_FAILURE() << "accepted " << bad.text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), path);
+      EXPECT_EQ(e.line(), 2) << bad.text;
+      EXPECT_NE(std::string(e.what()).find(bad.pointer + ": "), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(bad.phrase), std::string::npos) << e.what();
+    }
+  }
+  fs::remove_all(dir);
+}
+
 TEST(Lights, TheSidecarIsReadUnlessAFileIsGivenAndShortcutsAreAdded) {
   const fs::path dir = scratch("sidecar");
   const std::string scene = (dir / "room.obj").string();
