@@ -306,16 +306,20 @@ void PatchMesh::subdivideUniform(double maxArea) {
 
 void PatchMesh::subdivideToCount(int count) {
   // Largest first, from a heap whose stale entries (an element split since it was pushed) are
-  // recognised by their area no longer matching.
-  using Entry = std::pair<double, int>;
+  // recognised by their key no longer matching. Areas are compared in steps of 2^-32 of the
+  // total, the lowest index first among equals: rounding must not decide between congruent
+  // elements, or the mesh would depend on the scene's scale and position.
+  const double unit = totalArea() / 4294967296.0;
+  const auto key = [&](int e) { return std::llround(area(e) / unit); };
+  using Entry = std::pair<long long, int>;  // (area key, -element)
   std::priority_queue<Entry> largest;
-  for (int e = 0; e < elementCount(); ++e) largest.push({area(e), e});
+  for (int e = 0; e < elementCount(); ++e) largest.push({key(e), -e});
   while (elementCount() < count && !largest.empty()) {
-    const auto [a, e] = largest.top();
+    const auto [k, minusE] = largest.top();
     largest.pop();
-    if (a != area(e)) continue;
-    bisect(e);
-    for (int f : touched_) largest.push({area(f), f});
+    if (k != key(-minusE)) continue;
+    bisect(-minusE);
+    for (int f : touched_) largest.push({key(f), -f});
   }
 }
 

@@ -9,6 +9,7 @@
 #include "radiosity/formfactors/analytic_patch_shots.h"
 #include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/scene/obj_loader.h"
+#include "radiosity/scene/scene_mesh.h"
 #include "radiosity/solvers/progressive_solver.h"
 #include "radiosity/visibility/ray_caster.h"
 
@@ -18,16 +19,19 @@ namespace {
 class AdaptiveCornell : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
+    const Scene scene = loadObjScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj");
     SolveOptions options;
     options.formFactors = FormFactorMethod::Analytic;
-    options.targetElements = 400;
+    // An area bound, not an element count: every wall starts at one density (a count stops
+    // part-way through a level of bisection, leaving some walls twice as fine as others), so
+    // the densities below measure refinement alone.
+    options.maxArea = buildPatchMesh(scene).totalArea() / 400;
     options.refineThreshold = 0.5;
     options.refinePasses = 3;
     options.shadowRays = 16;
     options.tolerance = 1e-5;
     setLogLevel(LogLevel::Quiet);
-    result_ = new SolveResult(
-        solveScene(loadObjScene(RADIOSITY_DATA_DIR "/cornell_box/cornell_box.obj"), options));
+    result_ = new SolveResult(solveScene(scene, options));
   }
   static void TearDownTestSuite() { delete result_; }
   static inline SolveResult* result_;
