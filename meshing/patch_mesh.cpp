@@ -39,9 +39,8 @@ PatchMesh::PatchMesh(const std::vector<Eigen::Vector3d>& positions,
   const auto withUvs = std::count_if(polygons.begin(), polygons.end(),
                                      [](const PatchPolygon& p) { return !p.uvs.empty(); });
   const auto withLightmapUvs =
-      std::count_if(polygons.begin(), polygons.end(), [](const PatchPolygon& p) {
-        return !p.uvs.empty() || !p.lightmapUvs.empty();
-      });
+      std::count_if(polygons.begin(), polygons.end(),
+                    [](const PatchPolygon& p) { return !p.uvs.empty() || !p.lightmapUvs.empty(); });
   anyUvs_ = withLightmapUvs > 0;
   allUvs_ = withUvs > 0 && withUvs == static_cast<long>(polygons.size());
   allLightmapUvs_ = anyUvs_ && withLightmapUvs == static_cast<long>(polygons.size());
@@ -106,7 +105,8 @@ void PatchMesh::addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b,
       for (int k = 0; k < 3; ++k) face.uv[2 * k] = uvs[k].x(), face.uv[2 * k + 1] = uvs[k].y();
     if (lightmapUvs)
       for (int k = 0; k < 3; ++k)
-        face.lightmapUv[2 * k] = lightmapUvs[k].x(), face.lightmapUv[2 * k + 1] = lightmapUvs[k].y();
+        face.lightmapUv[2 * k] = lightmapUvs[k].x(),
+                            face.lightmapUv[2 * k + 1] = lightmapUvs[k].y();
     face.valid = uvs != nullptr;
     face.lightmapValid = lightmapUvs != nullptr;
   }
@@ -250,8 +250,8 @@ void PatchMesh::splitUvs(TriMesh::FaceHandle f, int from, int to, int mid) {
   for (auto vh : mesh_.fv_range(f)) {
     child.vertex[k] = vh.idx();
     for (int axis = 0; axis < 2; ++axis)
-      for (auto [from_set, to_set] : {std::pair{&parent.uv, &child.uv},
-                                      std::pair{&parent.lightmapUv, &child.lightmapUv}})
+      for (auto [from_set, to_set] :
+           {std::pair{&parent.uv, &child.uv}, std::pair{&parent.lightmapUv, &child.lightmapUv}})
         (*to_set)[2 * k + axis] =
             vh.idx() == mid
                 ? 0.5 * (parentUv(*from_set, from, axis) + parentUv(*from_set, to, axis))

@@ -128,8 +128,8 @@ class PatchMesh {
     std::array<int, 3> vertex{};
     std::array<double, 6> uv{};          // (u, v) per entry of `vertex`: texture set
     std::array<double, 6> lightmapUv{};  // the same for the lightmap set
-    bool valid = false;          // false: the face's polygon had no texture coordinates
-    bool lightmapValid = false;  // false: it had no lightmap coordinates either
+    bool valid = false;                  // false: the face's polygon had no texture coordinates
+    bool lightmapValid = false;          // false: it had no lightmap coordinates either
   };
   std::array<Eigen::Vector2d, 3> cornerSet(int element, bool lightmap) const;
   void addTriangle(TriMesh::VertexHandle a, TriMesh::VertexHandle b, TriMesh::VertexHandle c,

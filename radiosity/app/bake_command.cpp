@@ -199,7 +199,6 @@ void runBake(const CLI::App& command, BakeOptions& o) {
         incident[e] = incidentLight(solution.radiosity[e], M_PI * elementLe[e], elementRho[e]);
       vertexIncident = interpolateVertexRadiance(interpolation, incident);
     }
-    }
     for (int page = 0; page < layout.pages; ++page) {
       if (gather) {
         // Per-texel final gather: direct light by shadow rays to the emitters and gathered light

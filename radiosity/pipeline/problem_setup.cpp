@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "radiosity/scene/surface_textures.h"
 #include "radiosity/scene/coverage.h"
+#include "radiosity/scene/surface_textures.h"
 
 namespace rad {
 

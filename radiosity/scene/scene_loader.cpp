@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "radiosity/core/errors.h"
-#include "radiosity/scene/gltf_loader.h"
 #include "radiosity/core/log.h"
+#include "radiosity/scene/gltf_loader.h"
 #include "radiosity/scene/obj_loader.h"
 
 namespace rad {

@@ -116,8 +116,7 @@ TEST(PatchMeshUvs, WithoutALightmapSetTheTextureUvsServe) {
   const PatchMesh mesh = makeUvL();
   ASSERT_TRUE(mesh.hasLightmapUvs());
   for (int e = 0; e < mesh.elementCount(); ++e)
-    for (int k = 0; k < 3; ++k)
-      EXPECT_EQ(mesh.cornerLightmapUvs(e)[k], mesh.cornerUvs(e)[k]);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(mesh.cornerLightmapUvs(e)[k], mesh.cornerUvs(e)[k]);
 }
 
 }  // namespace

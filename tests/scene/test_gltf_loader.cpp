@@ -207,12 +207,18 @@ TEST(GltfLoader, SceneUvBakingPrefersTheLightmapSet) {
   const Scene scene = loadScene(write(model, "lightmap_set.glb"));
   EXPECT_NO_THROW(checkLightmapUvs(scene));
   const PatchMesh mesh = buildPatchMesh(scene);
+  ASSERT_TRUE(mesh.hasLightmapUvs());
   ASSERT_TRUE(mesh.hasUvs());
-  for (int e = 0; e < mesh.elementCount(); ++e)
-    for (const Eigen::Vector2d& uv : mesh.cornerUvs(e)) {
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    for (const Eigen::Vector2d& uv : mesh.cornerLightmapUvs(e)) {
       EXPECT_LE(uv.x(), 0.5);  // TEXCOORD_1 spans [0, 0.5] × [0.75, 1] after the flip
       EXPECT_GE(uv.y(), 0.75);
     }
+    // The texture set stays TEXCOORD_0 (tiled over [0, 2]², v flipped to [-1, 1]) for look-ups.
+    double widest = 0;
+    for (const Eigen::Vector2d& uv : mesh.cornerUvs(e)) widest = std::max(widest, uv.x());
+    EXPECT_EQ(widest, 2.0);
+  }
   // Without TEXCOORD_1 the tiled set is what a bake would use, and it is refused.
   model.meshes[0].primitives[0].attributes.erase("TEXCOORD_1");
   EXPECT_THROW(checkLightmapUvs(loadScene(write(model, "tiled_only.glb"))), InputError);
