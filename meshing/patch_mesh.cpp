@@ -236,7 +236,6 @@ void PatchMesh::splitUvs(TriMesh::FaceHandle f, int from, int to, int mid) {
   // The child still holds its parent's UVs: its corners are the parent's, except the new vertex
   // in the middle of the split edge, whose UV is the mean of that edge's two ends in the parent.
   const FaceUvs parent = mesh_.property(uvs_, f);
-  if (!parent.valid && !parent.lightmapValid) return;
   auto parentUv = [&](const std::array<double, 6>& set, int vertex, int axis) {
     const int j = static_cast<int>(std::find(parent.vertex.begin(), parent.vertex.end(), vertex) -
                                    parent.vertex.begin());
@@ -249,6 +248,10 @@ void PatchMesh::splitUvs(TriMesh::FaceHandle f, int from, int to, int mid) {
   int k = 0;
   for (auto vh : mesh_.fv_range(f)) {
     child.vertex[k] = vh.idx();
+    if (!parent.valid && !parent.lightmapValid) {  // a polygon without UVs: only the keys move
+      ++k;
+      continue;
+    }
     for (int axis = 0; axis < 2; ++axis)
       for (auto [from_set, to_set] :
            {std::pair{&parent.uv, &child.uv}, std::pair{&parent.lightmapUv, &child.lightmapUv}})

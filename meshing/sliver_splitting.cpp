@@ -75,9 +75,13 @@ void PatchMesh::flipEdge(TriMesh::EdgeHandle e) {
     face.lightmapValid = before.lightmapValid;
     int k = 0;
     for (auto vh : mesh_.fv_range(f)) {
+      face.vertex[k] = vh.idx();
+      if (!face.valid && !face.lightmapValid) {  // a polygon without UVs: only the keys move
+        ++k;
+        continue;
+      }
       const auto uv = uvOf.find(vh.idx());
       RAD_CHECK_MSG(uv != uvOf.end(), "PatchMesh: a flipped face gained an unknown corner");
-      face.vertex[k] = vh.idx();
       face.uv[2 * k] = uv->second[0], face.uv[2 * k + 1] = uv->second[1];
       face.lightmapUv[2 * k] = uv->second[2], face.lightmapUv[2 * k + 1] = uv->second[3];
       ++k;

@@ -119,5 +119,29 @@ TEST(PatchMeshUvs, WithoutALightmapSetTheTextureUvsServe) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(mesh.cornerLightmapUvs(e)[k], mesh.cornerUvs(e)[k]);
 }
 
+// A scene may mix polygons with and without UVs (a textured floor beside untextured slivers):
+// splitting and flipping the ones without keeps every element's corner keys in step.
+TEST(PatchMeshUvs, SliversWithoutUvsBesideTexturedPolygonsSplitAndFlip) {
+  const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0},   {1, 1, 0},  {0, 1, 0},
+                                          {8, 0, 0}, {8, 0.2, 0}, {1, 0.2, 0}};
+  std::vector<PatchPolygon> polygons = {{{0, 1, 2, 3}, 0, {}}, {{1, 4, 5, 6}, 1, {}}};
+  for (int v : polygons[0].vertices) polygons[0].uvs.push_back(uvOf(0, p[v]));
+  PatchMesh mesh(p, polygons);
+  mesh.splitSlivers(4.0, 0.05);
+  mesh.subdivideUniform(0.01);
+  ASSERT_FALSE(mesh.hasUvs());
+  int textured = 0;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    ASSERT_EQ(mesh.hasUvs(e), mesh.patch(e) == 0) << "element " << e;
+    if (!mesh.hasUvs(e)) continue;
+    ++textured;
+    const auto corners = mesh.corners(e);
+    const auto uv = mesh.cornerUvs(e);
+    for (int k = 0; k < 3; ++k)
+      ASSERT_NEAR((uv[k] - uvOf(0, corners[k])).norm(), 0, 1e-12) << "element " << e;
+  }
+  EXPECT_GT(textured, 50);
+}
+
 }  // namespace
 }  // namespace rad
