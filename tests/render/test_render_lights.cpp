@@ -274,8 +274,9 @@ TEST(RenderLights, RaysThatLeaveTheSceneSeeTheSkyAboveTheHorizonAndTheSunsDisc) 
   const Rgb disc = sunRadiance(theSun);
   ASSERT_GT(disc.r, 1000);  // E / (π sin² 5°)
   for (const auto& [name, method] : allMethods(*w)) {
+    const auto& integrator = *method;  // a lambda may not capture a structured binding (C++17)
     const auto seen = [&](const Eigen::Vector3d& d) {
-      return estimate(*method, eye, eye + d, 2, 7);
+      return estimate(integrator, eye, eye + d, 2, 7);
     };
     expectRadiance(seen({0.05, 1, 0}), theSky.radiance + disc, name + " into the sun");
     expectRadiance(seen({1, 1, 0}), theSky.radiance, name + " the sky");
