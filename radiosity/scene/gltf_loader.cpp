@@ -183,7 +183,7 @@ tinygltf::Model parseModel(const std::string& path) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(jsonText(bytes, path));
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse errors, and numbers out of range
     throw InputError(path, 0, std::string("not valid glTF JSON: ") + e.what());
   }
   checkJson(j, path);
