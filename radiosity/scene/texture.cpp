@@ -30,7 +30,8 @@ namespace rad {
 namespace {
 
 // Images above this many texels are refused: a corrupt header must not allocate gigabytes.
-constexpr long long kMaxTexels = 1LL << 28;
+// 2^26 texels (8192²) hold 1 GiB as linear float RGBA, the most one texture may take.
+constexpr long long kMaxTexels = 1LL << 26;
 
 int wrap(int i, int n) {
   const int m = i % n;
