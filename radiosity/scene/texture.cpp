@@ -29,9 +29,10 @@
 namespace rad {
 namespace {
 
-// Images above this many texels are refused: a corrupt header must not allocate gigabytes.
-// 2^26 texels (8192²) hold 1 GiB as linear float RGBA, the most one texture may take.
-constexpr long long kMaxTexels = 1LL << 26;
+// No image format stb decodes packs more texels into one byte: a 1-bit PNG at deflate's largest
+// ratio (1032:1) gives about 8,300. A header claiming more states a size its data cannot hold
+// (stb would pad the missing rows, and spend seconds doing so on a 60-byte file).
+constexpr long long kMaxTexelsPerByte = 16384;
 
 int wrap(int i, int n) {
   const int m = i % n;
@@ -171,7 +172,7 @@ double Texture::averageAlpha(const std::array<Eigen::Vector2d, 3>& uv) const {
 }
 
 Texture decodeTexture(const unsigned char* bytes, std::size_t size, const std::string& source,
-                      TextureEncoding encoding) {
+                      TextureEncoding encoding, long long maxTexels) {
   if (size == 0 || size > static_cast<std::size_t>(INT32_MAX))
     throw InputError(source, 0, "not a readable image (" + std::to_string(size) + " bytes)");
   const int length = static_cast<int>(size);
@@ -180,9 +181,14 @@ Texture decodeTexture(const unsigned char* bytes, std::size_t size, const std::s
     throw InputError(
         source, 0,
         std::string("not a readable image (PNG, JPEG, TGA, BMP or HDR): ") + stbi_failure_reason());
-  if (w <= 0 || h <= 0 || static_cast<long long>(w) * h > kMaxTexels)
+  const long long texels = static_cast<long long>(w) * h;
+  if (w <= 0 || h <= 0 || texels > maxTexels)
     throw InputError(source, 0,
                      "image of " + std::to_string(w) + "×" + std::to_string(h) + " texels refused");
+  if (texels > kMaxTexelsPerByte * static_cast<long long>(size))
+    throw InputError(source, 0,
+                     "image header claims " + std::to_string(w) + "×" + std::to_string(h) +
+                         " texels in only " + std::to_string(size) + " bytes: corrupt header");
   Texture texture;
   texture.source = source;
   texture.width = w;

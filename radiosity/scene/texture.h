@@ -41,8 +41,11 @@ struct Texture {
 // Throws InputError naming `path` when the file is missing, unreadable or not an image.
 Texture loadTextureFile(const std::string& path, TextureEncoding encoding);
 // The same from bytes in memory (an image embedded in a .glb); `source` names it in errors.
+// Images of more than `maxTexels` texels are refused before decoding (a corrupt header must not
+// allocate gigabytes); the default, 2^26 (8192², 1 GiB as float RGBA), fits any real texture.
+constexpr long long kMaxTextureTexels = 1LL << 26;
 Texture decodeTexture(const unsigned char* bytes, std::size_t size, const std::string& source,
-                      TextureEncoding encoding);
+                      TextureEncoding encoding, long long maxTexels = kMaxTextureTexels);
 
 // The sRGB transfer function's inverse (IEC 61966-2-1): an 8-bit colour value / 255 to linear.
 double srgbToLinear(double encoded);

@@ -80,5 +80,35 @@ TEST(Texture, MissingAndCorruptFilesNameTheFile) {
   }
 }
 
+TEST(Texture, AHeaderClaimingMoreTexelsThanTheCapIsRefusedBeforeDecoding) {
+  // A TGA header stating 8192 × 8193 texels followed by no pixel data at all: the default cap
+  // (8192²) refuses it from the header alone, before the size-per-byte check, naming the file and
+  // the size it claims.
+  const std::vector<unsigned char> header = {0, 0, 2, 0, 0,  0, 0,  0,  0,
+                                             0, 0, 0, 0, 32, 1, 32, 24, 0};
+  try {
+    decodeTexture(header.data(), header.size(), "huge.tga", TextureEncoding::Srgb);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("huge.tga"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("8192×8193"), std::string::npos) << e.what();
+  }
+  // A header whose size its data cannot hold: 1000 × 1000 texels in 18 bytes.
+  const std::vector<unsigned char> truncated = {0, 0, 2, 0,    0, 0,    0, 0,  0,
+                                                0, 0, 0, 0xe8, 3, 0xe8, 3, 24, 0};
+  try {
+    decodeTexture(truncated.data(), truncated.size(), "cut.tga", TextureEncoding::Srgb);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cut.tga"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("corrupt header"), std::string::npos) << e.what();
+  }
+  // A caller's smaller cap applies in the same way; an image within it decodes.
+  const auto small = tga(2, 2, std::vector<unsigned char>(12, 128));
+  EXPECT_THROW(decodeTexture(small.data(), small.size(), "s.tga", TextureEncoding::Srgb, 3),
+               InputError);
+  EXPECT_EQ(decodeTexture(small.data(), small.size(), "s.tga", TextureEncoding::Srgb, 4).width, 2);
+}
+
 }  // namespace
 }  // namespace rad
