@@ -35,7 +35,7 @@ class FormFactorCache : public ShotRows {
   // fraction F_ij of i's hemisphere row.
   int shooterCount() const override { return elementCount(); }
   int shooterOf(int element) const override { return element; }
-  double shooterArea(int shooter) const override { return method_.mesh().area(shooter); }
+  double shooterArea(int shooter) const override { return method_.shootingArea(shooter); }
   const FormFactorRow& powerFractions(int shooter) override { return row(shooter); }
   std::string description() const override { return "element rows (hemisphere)"; }
   int rowsComputed() const { return rowsComputed_; }

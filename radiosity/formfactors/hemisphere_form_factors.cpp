@@ -205,7 +205,13 @@ void HemisphereFormFactors::RowSampler::fill(int begin, RayBlock& b) const {
 
 void HemisphereFormFactors::frontHits(int element, const RayBlock& b, int* target) const {
   // Only the front of a surface receives: a back-face hit is absorbed and counts as escaped.
+  const bool partlyBuried =
+      options_.exposure != nullptr && options_.exposure->buriedCells(element) != 0;
   for (int i = 0; i < b.count; ++i) {
+    if (partlyBuried && options_.exposure->buried(element, b.u[2][i], b.u[3][i])) {
+      target[i] = kBuriedOrigin;
+      continue;
+    }
     const int t = b.element[i];
     int front = -1;
     if (t >= 0 && t != element) {
@@ -251,7 +257,7 @@ std::vector<RowRay> HemisphereFormFactors::traceRow(int element) const {
       const double length = d.norm();  // 1 within float rounding; distances are along d
       ray.direction = d / length;
       ray.distance = b.distance[i] * length;
-      ray.target = target[i];
+      ray.target = std::max(target[i], -1);
     }
   });
   return rays;
@@ -291,7 +297,10 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
           traceThroughSpecular(rays_, normals_, options_.specular, origin, direction, element,
                                pathRng, options_.maxSpecularDepth, &rays);
       firstHit[k] = -1;
-      if (end.element >= 0 && end.element != element) {
+      if (options_.exposure != nullptr &&
+          options_.exposure->buried(element, b.u[2][i], b.u[3][i])) {
+        firstHit[k] = kBuriedOrigin;
+      } else if (end.element >= 0 && end.element != element) {
         firstHit[k] = end.element;
         weight[k] = end.weight;
       }
@@ -314,15 +323,21 @@ FormFactorRow HemisphereFormFactors::assemble(const std::vector<int>& firstHit) 
   uint32_t* count = scratch.count.data();
   uint32_t* touched = scratch.touched.data();
   size_t m = 0;
+  int dropped = 0;  // rays from buried cells
   for (int t : firstHit) {
+    if (t == kBuriedOrigin) {
+      ++dropped;
+      continue;
+    }
     const uint32_t slot = t < 0 ? escapedSlot : static_cast<uint32_t>(t);
     touched[m] = slot;
     m += count[slot]++ == 0;
   }
   FormFactorRow row;
-  const double perRay = 1.0 / n;
-  row.escaped = count[escapedSlot] * perRay;
-  if (count[escapedSlot] > 0) --m;  // the escaped slot is no target
+  const double perRay = dropped < n ? 1.0 / (n - dropped) : 0.0;
+  row.escaped = dropped < n ? count[escapedSlot] * perRay : 1.0;  // all buried: none shot
+  const bool anyEscaped = count[escapedSlot] > 0;
+  if (anyEscaped) --m;  // the escaped slot is no target
   count[escapedSlot] = 0;
   row.targets.resize(m);
   row.values.resize(m);
@@ -333,12 +348,12 @@ FormFactorRow HemisphereFormFactors::assemble(const std::vector<int>& firstHit) 
     count[t] = 0;
   };
   if (m * 512 < escapedSlot) {
-    std::sort(touched, touched + m + (row.escaped > 0));
+    std::sort(touched, touched + m + anyEscaped);
     for (size_t k = 0; k < m; ++k) emit(touched[k]);  // the escaped slot, if any, sorts last
   } else {
     scratch.bits.assign(escapedSlot / 64 + 1, 0);
     uint64_t* bits = scratch.bits.data();
-    for (size_t k = 0; k < m + (row.escaped > 0); ++k)
+    for (size_t k = 0; k < m + anyEscaped; ++k)
       bits[touched[k] >> 6] |= uint64_t(1) << (touched[k] & 63);
     for (size_t w = 0; j < m; ++w)
       for (uint64_t word = bits[w]; word != 0 && j < m; word &= word - 1)
@@ -355,10 +370,11 @@ FormFactorRow HemisphereFormFactors::assembleTinted(const std::vector<int>& firs
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return firstHit[a] < firstHit[b]; });
   FormFactorRow row;
-  const double perRay = 1.0 / n;
+  const int dropped = static_cast<int>(std::count(firstHit.begin(), firstHit.end(), kBuriedOrigin));
+  const double perRay = dropped < n ? 1.0 / (n - dropped) : 0.0;
   size_t k = 0;
   while (k < order.size() && firstHit[order[k]] < 0) ++k;
-  row.escaped = k * perRay;
+  row.escaped = dropped < n ? (k - dropped) * perRay : 1.0;
   bool anyTint = false;
   while (k < order.size()) {
     const int target = firstHit[order[k]];

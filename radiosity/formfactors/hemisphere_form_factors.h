@@ -7,6 +7,7 @@
 #include "radiosity/formfactors/form_factor_row.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/specular_paths.h"
+#include "radiosity/visibility/element_exposure.h"
 #include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
@@ -28,14 +29,18 @@ struct HemisphereOptions {
   // ray ever continues past its first hit.
   std::vector<SpecularSurface> specular = {};
   int maxSpecularDepth = 16;
+  // Optional: the buried parts of elements (element_exposure.h). Rays whose origin lies in a
+  // buried cell are dropped and the row is the fraction of the others, so an element shoots from
+  // its exposed part only. Must outlive the form factors.
+  const ElementExposure* exposure = nullptr;
 };
 
 // Form factors by cosine-weighted hemisphere ray casting (Monte Carlo "gathering" estimate):
 // rays leave uniformly distributed points on element i with cosine-weighted directions, and
-// F_ij = (rays whose first hit is the front of j) / (rays cast). Origins and directions are
-// stratified (a jittered grid over directions, paired with a shuffled jittered grid over the
-// element) to lower the variance without bias. Rows are assembled from hit counts in a dense
-// per-thread array (no sort of the rays, no allocation per ray): the work on top of the ray
+// F_ij = (rays whose first hit is the front of j) / (rays cast from i's exposed part). Origins and
+// directions are stratified (a jittered grid over directions, paired with a shuffled jittered grid
+// over the element) to lower the variance without bias. Rows are assembled from hit counts in a
+// dense per-thread array (no sort of the rays, no allocation per ray): the work on top of the ray
 // casts stays small next to them (bench/throughput).
 //
 // Extended form factors: a ray whose first hit is a mirror or glass continues (see
@@ -58,6 +63,11 @@ class HemisphereFormFactors {
                : options_.raysPerElement * options_.rayMultiplier[element];
   }
   const PatchMesh& mesh() const { return mesh_; }
+  // The area element i shoots from: all of it, or its exposed part (as makeProblem's area).
+  double shootingArea(int element) const {
+    return mesh_.area(element) *
+           (options_.exposure ? options_.exposure->exposedFraction(element) : 1.0);
+  }
   // Rays cast beyond the first one of each sample: the continuations through mirrors and glass.
   uint64_t specularRays() const { return extraRays_.load(); }
 
@@ -85,7 +95,9 @@ class HemisphereFormFactors {
     std::vector<int>& positionCell_;  // ray k's position stratum, y << 16 | x
     uint64_t key_ = 0;
   };
-  // Each ray's first hit in a cast block: the element whose front it hit first, or -1.
+  // Each ray's first hit in a cast block: the element whose front it hit first, -1, or
+  // kBuriedOrigin for a ray that left a buried part of the element (not counted in the row).
+  static constexpr int kBuriedOrigin = -2;
   void frontHits(int element, const RayBlock& block, int* target) const;
   // Rows from each ray's first hit (-1: escaped): plain counts, or with each path's tint.
   FormFactorRow assemble(const std::vector<int>& firstHit) const;

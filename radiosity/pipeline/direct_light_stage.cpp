@@ -94,28 +94,54 @@ Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vec
 }
 
 DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
-                                   const SolveOptions& options)
+                                   const SolveOptions& options, const ElementExposure* exposure)
     : scene_(scene),
       mesh_(mesh),
       rays_(rays),
+      exposure_(exposure),
       seed_(options.seed),
       receiverPoints_(options.receiverPoints) {}
 
 void DirectLightStage::compute(int e) {
   const Eigen::Vector3d n = mesh_.normal(e);
-  const auto points = receiverPoints(mesh_.corners(e), receiverPoints_);
+  const auto corners = mesh_.corners(e);
+  auto points = receiverPoints(corners, receiverPoints_);
   const int count = receiverPoints_ == 1 ? 1 : 3;
+  // Receiver points in a buried part of the element see no light, whatever reaches the rest.
+  std::array<bool, 3> exposed{true, true, true};
+  int exposedCount = count;
+  if (exposure_ != nullptr && exposure_->buriedCells(e) != 0) {
+    exposedCount = 0;
+    for (int k = 0; k < count; ++k) {
+      const Eigen::Vector3d w =
+          count == 1 ? Eigen::Vector3d::Constant(1.0 / 3) : receiverWeights(k);
+      exposed[k] = !exposure_->buriedAtBarycentric(e, w[1], w[2]);
+      exposedCount += exposed[k];
+    }
+    if (exposedCount == 0) {  // all of them buried: one exposed point instead
+      const Eigen::Vector2d w = exposure_->exposedPoint(e);
+      points[0] = corners[0] + w[0] * (corners[1] - corners[0]) + w[1] * (corners[2] - corners[0]);
+      exposed[0] = true;
+      exposedCount = 1;
+    }
+  }
   uint64_t cast = 0;
   std::array<Rgb, 3> atPoints{};
   for (size_t l = 0; l < scene_.lights.size(); ++l)
     for (int k = 0; k < count; ++k)
-      atPoints[k] += directIrradiance(scene_.lights[l], rays_, points[k], n,
-                                      streamKey(seed_ ^ 0x6c69676874ull, static_cast<uint64_t>(e),
-                                                l * 3 + static_cast<uint64_t>(k)),
-                                      cast);
-  if (count == 1) atPoints[1] = atPoints[2] = atPoints[0];
+      if (exposed[k])
+        atPoints[k] += directIrradiance(scene_.lights[l], rays_, points[k], n,
+                                        streamKey(seed_ ^ 0x6c69676874ull, static_cast<uint64_t>(e),
+                                                  l * 3 + static_cast<uint64_t>(k)),
+                                        cast);
+  Rgb mean;
+  for (int k = 0; k < count; ++k)
+    if (exposed[k]) mean += atPoints[k];
+  mean = mean / exposedCount;
+  for (int k = 0; k < 3; ++k)
+    if (k >= count || !exposed[k]) atPoints[k] = mean;
   pointIrradiance_[e] = atPoints;
-  irradiance_[e] = (atPoints[0] + atPoints[1] + atPoints[2]) / 3;
+  irradiance_[e] = mean;
   elementRays_[e] = cast;
 }
 

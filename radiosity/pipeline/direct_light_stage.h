@@ -12,6 +12,7 @@
 #include "radiosity/pipeline/solve_options.h"
 #include "radiosity/scene/scene.h"
 #include "radiosity/solvers/radiosity_problem.h"
+#include "radiosity/visibility/element_exposure.h"
 #include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
@@ -38,8 +39,10 @@ Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vec
 // to the scene, mesh and ray caster, which must outlive it.
 class DirectLightStage {
  public:
+  // With `exposure`, receiver points in a buried part of an element are left out (the element's
+  // E_d is the mean over the others; with none left, E_d at an exposed point of the element).
   DirectLightStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
-                   const SolveOptions& options);
+                   const SolveOptions& options, const ElementExposure* exposure = nullptr);
 
   // Computes E_d for every element and adds ρ E_d to problem.emission; logs one line.
   void apply(RadiosityProblem& problem);
@@ -64,6 +67,7 @@ class DirectLightStage {
   const Scene& scene_;
   const PatchMesh& mesh_;
   const RayCaster& rays_;
+  const ElementExposure* exposure_;
   uint64_t seed_;
   int receiverPoints_;
   std::vector<Rgb> irradiance_;

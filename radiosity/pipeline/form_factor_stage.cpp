@@ -10,13 +10,15 @@
 namespace rad {
 
 FormFactorStage::FormFactorStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
-                                 const RadiosityProblem& problem, const SolveOptions& options)
+                                 const RadiosityProblem& problem, const SolveOptions& options,
+                                 const ElementExposure* exposure)
     : mesh_(mesh),
       problem_(problem),
       hemisphere_(
           mesh, rays,
           {options.raysPerElement, options.seed, emitterRayMultipliers(problem),
-           scene.hasSpecular() ? specularSurfaces(scene, mesh) : std::vector<SpecularSurface>()}),
+           scene.hasSpecular() ? specularSurfaces(scene, mesh) : std::vector<SpecularSurface>(),
+           HemisphereOptions().maxSpecularDepth, exposure}),
       cache_(hemisphere_) {
   if (options.formFactors != FormFactorMethod::Analytic) return;
   analytic_ = std::make_unique<AnalyticPatchShots>(

@@ -24,8 +24,11 @@ namespace rad {
 // Holds references to the mesh and the ray caster, which must outlive it.
 class FormFactorStage {
  public:
+  // `exposure` (optional, must outlive the stage): hemisphere rows shoot from the exposed parts
+  // of elements only.
   FormFactorStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
-                  const RadiosityProblem& problem, const SolveOptions& options);
+                  const RadiosityProblem& problem, const SolveOptions& options,
+                  const ElementExposure* exposure = nullptr);
 
   ShotRows& shots();
   // Every row at once, for the gathering solvers (with a progress line).

@@ -8,7 +8,8 @@
 
 namespace rad {
 
-RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
+RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh,
+                             const ElementExposure* exposure) {
   RadiosityProblem problem;
   const int n = mesh.elementCount();
   problem.emission.resize(n);
@@ -31,7 +32,9 @@ RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh) {
       problem.emission[e] = covered * problem.emission[e];
       problem.reflectance[e] = covered * problem.reflectance[e];
     }
-    problem.area[e] = mesh.area(e);
+    // Power per unit area is over the part light can reach: a buried part neither receives nor
+    // shoots (the rows drop rays that leave it).
+    problem.area[e] = mesh.area(e) * (exposure ? exposure->exposedFraction(e) : 1.0);
   }
   return problem;
 }

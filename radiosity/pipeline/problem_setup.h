@@ -6,12 +6,15 @@
 #include "radiosity/formfactors/specular_paths.h"
 #include "radiosity/scene/scene.h"
 #include "radiosity/solvers/radiosity_problem.h"
+#include "radiosity/visibility/element_exposure.h"
 
 namespace rad {
 
 // The per-element problem of a meshed scene: E = pi·Ke on emitters, rho = Kd (0 on mirrors
-// and glass, which hold no radiosity), each times its texture's area average over the element.
-RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh);
+// and glass, which hold no radiosity), each times its texture's area average over the element;
+// A = the element's area, or with `exposure` its exposed area (element_exposure.h).
+RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh,
+                             const ElementExposure* exposure = nullptr);
 
 // Mirror and glass behaviour per element for extended form factors.
 std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMesh& mesh);

@@ -60,6 +60,11 @@ struct SolveReport {
   uint64_t specularRays = 0;  // continuations through mirrors and glass
   uint64_t raysCast = 0;
   uint64_t directLightRays = 0;  // the first shot of the scene's lights: shadow rays cast
+  // Buried parts of elements (element_exposure.h): elements partly and fully buried, the buried
+  // share of the total area, and the probe rays that found them.
+  int partlyBuried = 0, fullyBuried = 0;
+  double buriedAreaFraction = 0;
+  uint64_t exposureProbeRays = 0;
   int threads = 0;
   bool reusedSavedSolution = false;
   StageTimes times;

@@ -52,6 +52,21 @@ void noteBlackElements(const Solution& solution, SolveReport& report) {
                 "reflectance 0: they receive light but pass none on");
 }
 
+void noteBuriedParts(const ElementExposure& exposure, const PatchMesh& mesh, SolveReport& report) {
+  report.partlyBuried = exposure.partlyBuried();
+  report.fullyBuried = exposure.fullyBuried();
+  report.buriedAreaFraction = exposure.buriedArea() / mesh.totalArea();
+  report.exposureProbeRays = exposure.probeRays();
+  if (exposure.fullyBuried() > 0)
+    report.skip("shooting from " + std::to_string(exposure.fullyBuried()) + " buried elements",
+                "enclosed by one-sided geometry: no light reaches them");
+  if (exposure.partlyBuried() + exposure.fullyBuried() > 0)
+    logInfo("buried: " + std::to_string(exposure.partlyBuried()) + " elements partly, " +
+            std::to_string(exposure.fullyBuried()) + " fully (" +
+            formatNumber(100 * report.buriedAreaFraction) + "% of the area), " +
+            std::to_string(exposure.probeRays()) + " probe rays");
+}
+
 // What the solver reached: B per element, at the receiver points where they resolve it, and the
 // unshot power a shooting solver still holds.
 void keepSolution(const Solver& solver, bool pointValues, Solution& solution, SolveReport& report) {
@@ -124,11 +139,18 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   t = Clock::now();
   const RayCaster rays(*solution.mesh, solution.scene);
   report.times.bvh = since(t);
-  solution.problem = makeProblem(solution.scene, *solution.mesh);
-  DirectLightStage directLight(solution.scene, *solution.mesh, rays, options);
+  // The buried parts of elements, with hemisphere rows (analytic factors sample their receivers
+  // at fixed points and are refined instead).
+  const ElementExposure exposure = options.formFactors == FormFactorMethod::Hemisphere
+                                       ? ElementExposure(*solution.mesh, rays)
+                                       : ElementExposure();
+  noteBuriedParts(exposure, *solution.mesh, report);
+  solution.problem = makeProblem(solution.scene, *solution.mesh, &exposure);
+  DirectLightStage directLight(solution.scene, *solution.mesh, rays, options, &exposure);
   directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
   noteBlackElements(solution, report);
-  FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options);
+  FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options,
+                              &exposure);
   throwIfInterrupted();
 
   t = Clock::now();

@@ -10,6 +10,7 @@
 #include "radiosity/render/scattering.h"
 #include "radiosity/render/sobol_sampler.h"
 #include "radiosity/scene/surface_textures.h"
+#include "radiosity/visibility/element_exposure.h"
 
 namespace rad {
 
@@ -63,6 +64,7 @@ FinalGather::ElementLight FinalGather::meanLightSample() const {
   const int n = mesh.elementCount();
   ElementLight light{std::vector<Rgb>(n), std::vector<char>(n, 1)};
   if (scene_.emitters().empty()) return light;
+  const ElementExposure exposure(mesh, scene_.caster());
   tbb::parallel_for(tbb::blocked_range<int>(0, n), [&](const tbb::blocked_range<int>& range) {
     RayCounts unused;
     for (int e = range.begin(); e < range.end(); ++e) {
@@ -75,17 +77,21 @@ FinalGather::ElementLight FinalGather::meanLightSample() const {
       hit.front = true;
       hit.material = &m;
       Rgb sum;
-      int lit = 0;
+      int lit = 0, exposed = 0;
       for (int k = 0; k < kPoints; ++k) {
         const Point2 p = SobolSampler::point(k, streamKey(0x4d45414e, e, 1));
+        // The solution's B is over the element's exposed part (element_exposure.h): so is the
+        // mean of its direct light.
+        if (exposure.buried(e, p.x, p.y)) continue;
+        ++exposed;
         const double r = std::sqrt(p.x);
         hit.position = (1 - r) * c[0] + r * (1 - p.y) * c[1] + r * p.y * c[2];
         const Rgb v = lightSample(hit, SobolSampler::point(k, streamKey(0x4d45414e, e, 2)), unused);
         lit += v.maxComponent() > 0;
         sum += v;
       }
-      light.mean[e] = sum / kPoints;
-      light.uniform[e] = lit == 0 || lit == kPoints;
+      light.mean[e] = exposed > 0 ? sum / exposed : Rgb();
+      light.uniform[e] = lit == 0 || lit == exposed;
     }
   });
   return light;

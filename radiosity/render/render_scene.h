@@ -73,6 +73,7 @@ class RenderScene {
   const SceneLights& lights() const { return lights_; }
   bool hasSpecular() const { return hasSpecular_; }
   bool hasMotion() const { return motion_ != nullptr; }
+  const RayCaster& caster() const { return caster_; }
 
  private:
   const Scene& scene_;
