@@ -69,7 +69,7 @@ INSTANTIATE_TEST_SUITE_P(
                   ":3: /lights/1/type", "unknown light type \"area\""},
         BadLights{"environment",
                   "{\"lights\": [{\"type\": \"environment\", \"file\": \"sky.hdr\"}]}",
-                  ":1: /lights/0/type", "not supported yet"},
+                  ":1: /lights/0/file", "sky.hdr: cannot open the environment image"},
         BadLights{"negative_intensity",
                   "{\"lights\": [\n {\"type\": \"point\",\n  \"position\": [0, 1, 0],\n"
                   "  \"intensity\": [1, -1, 1]}]}",
