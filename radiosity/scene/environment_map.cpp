@@ -116,20 +116,25 @@ double EnvironmentMap::pdf(const Eigen::Vector3d& direction) const {
 }
 
 void EnvironmentMap::buildIrradianceTable() const {
-  // Blocks of texels as point sources: their power Σ L Ω at their luminance-weighted direction
-  // (where a sun's texel lies, not the block's centre).
-  const int bw = std::min(width_, kBlockColumns), bh = std::min(height_, kBlockRows);
+  // Point sources: a large map's texels grouped into blocks, a small map's texels split into
+  // cells (so that no source spans much more than a block), each with its power Σ L Ω at its
+  // luminance-weighted direction (where a sun's texel lies, not the block's centre).
+  const int sx = (kBlockColumns + width_ - 1) / width_, sy = (kBlockRows + height_ - 1) / height_;
+  const long long cellsX = static_cast<long long>(width_) * sx,
+                  cellsY = static_cast<long long>(height_) * sy;
+  const int bw = static_cast<int>(std::min<long long>(cellsX, kBlockColumns));
+  const int bh = static_cast<int>(std::min<long long>(cellsY, kBlockRows));
   std::vector<Rgb> power(static_cast<std::size_t>(bw) * bh);
   std::vector<Eigen::Vector3d> weighted(power.size(), Eigen::Vector3d::Zero());
   std::vector<Eigen::Vector3d> centre(power.size(), Eigen::Vector3d::Zero());
-  for (int y = 0; y < height_; ++y) {
-    const double omega = texelSolidAngle(y);
-    const int by = static_cast<int>(static_cast<long long>(y) * bh / height_);
-    for (int x = 0; x < width_; ++x) {
-      const std::size_t b = static_cast<std::size_t>(by) * bw +
-                            static_cast<std::size_t>(static_cast<long long>(x) * bw / width_);
-      const Rgb& l = radiance_[static_cast<std::size_t>(y) * width_ + x];
-      const Eigen::Vector3d d = direction((x + 0.5) / width_, (y + 0.5) / height_);
+  for (long long cy = 0; cy < cellsY; ++cy) {
+    const double t0 = static_cast<double>(cy) / cellsY, t1 = static_cast<double>(cy + 1) / cellsY;
+    const double omega = 2 * M_PI / cellsX * (std::cos(M_PI * t0) - std::cos(M_PI * t1));
+    const std::size_t by = static_cast<std::size_t>(cy * bh / cellsY);
+    for (long long cx = 0; cx < cellsX; ++cx) {
+      const std::size_t b = by * bw + static_cast<std::size_t>(cx * bw / cellsX);
+      const Rgb& l = radiance_[static_cast<std::size_t>(cy / sy) * width_ + (cx / sx)];
+      const Eigen::Vector3d d = direction((cx + 0.5) / cellsX, (cy + 0.5) / cellsY);
       power[b] += l * omega;
       weighted[b] += std::max(0.0, l.luminance()) * omega * d;
       centre[b] += omega * d;

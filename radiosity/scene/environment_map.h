@@ -57,8 +57,9 @@ class EnvironmentMap {
 
   // The irradiance on a plane of unit normal `n`, unshadowed: ∫ L max(0, n·ω) dω over the whole
   // sphere, from a table over normals (64 azimuths × 33 zenith angles, bilinear between them)
-  // that sums each block of at most 128 × 64 texels as one source at its luminance-weighted
-  // mean direction. Built on first use (the local model `direct` is its only user).
+  // that sums 128 × 64 blocks (groups of texels, or parts of one in a smaller map) as point
+  // sources at their luminance-weighted mean direction. Built on first use (the local model
+  // `direct` is its only user).
   Rgb irradiance(const Eigen::Vector3d& n) const;
 
  private:

@@ -17,6 +17,7 @@
 #include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/scene/light_shapes.h"
 #include "radiosity/scene/scene.h"
+#include "tests/support/clear_sky_reference.h"
 #include "tests/support/hdr_writer.h"
 
 namespace rad {
@@ -367,34 +368,13 @@ TEST(DirectLight, EnvironmentBrightOnlyAboveTheHorizonIsTheUniformSky) {
   EXPECT_NEAR(wall, kRho.r * M_PI / 2, kRho.r * mapTolerance(1, side));
 }
 
-// The CIE clear sky's irradiance on an open upward plane, E = L_z ∫ ratio cosθ dω, by the midpoint
-// rule on a 0.05° × 0.1° grid of the formula written out here. Every element's estimate is
-// independent and alike (nothing shadows), so their mean lies within 5 standard errors (from
-// their spread) of ρE.
-double clearSkyUpwardIrradiance(double sunElevationDegrees) {
-  const double thetaSun = M_PI / 2 - sunElevationDegrees * M_PI / 180;
-  const auto f = [](double x) {
-    return 0.91 + 10 * std::exp(-3 * x) + 0.45 * std::cos(x) * std::cos(x);
-  };
-  const int nt = 1800, np = 3600;
-  double sum = 0;
-  for (int i = 0; i < nt; ++i) {
-    const double theta = (i + 0.5) * (M_PI / 2) / nt;
-    for (int j = 0; j < np; ++j) {
-      const double phi = (j + 0.5) * 2 * M_PI / np;  // from the sun's azimuth
-      const double cosGamma = std::cos(theta) * std::cos(thetaSun) +
-                              std::sin(theta) * std::sin(thetaSun) * std::cos(phi);
-      const double gamma = std::acos(std::clamp(cosGamma, -1.0, 1.0));
-      sum += f(gamma) * (1 - std::exp(-0.32 / std::cos(theta))) * std::cos(theta) * std::sin(theta);
-    }
-  }
-  return sum * (M_PI / 2 / nt) * (2 * M_PI / np) / (f(thetaSun) * (1 - std::exp(-0.32)));
-}
-
+// The CIE clear sky's irradiance on an open upward plane (tests/support/clear_sky_reference.h).
+// Every element's estimate is independent and alike (nothing shadows), so their mean lies within
+// 5 standard errors (from their spread) of ρE.
 TEST(DirectLight, CieClearSkyOnAnOpenUpwardPlaneMatchesTheIntegratedFormula) {
   const double e = 35 * M_PI / 180;
   const Light light = cieClearSky({1, 2, 3}, {std::cos(e) * 0.6, -std::sin(e), std::cos(e) * 0.8});
-  const double want = clearSkyUpwardIrradiance(35);
+  const double want = testing::clearSkyUpwardIrradiance(35);
   const Solution s = solveScene(floorScene({light}), quickOptions()).solution;
   const int n = s.mesh->elementCount();
   double sum = 0, squares = 0;
