@@ -20,9 +20,10 @@ void addCommonFlags(CLI::App& command) {
 // Options shared by every command that solves first (solve, render, bake, view).
 void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solverName) {
   // Scene input: the lights besides emissive polygons (read by loadScene with the scene).
-  command.add_option("--lights", options.lights.file,
-                     "Lights file (JSON: point, spot, directional, sky; see docs/physics.md); "
-                     "default: <scene>.lights.json beside the scene when it exists");
+  command.add_option(
+      "--lights", options.lights.file,
+      "Lights file (JSON: point, spot, directional, sky, environment; see docs/physics.md); "
+      "default: <scene>.lights.json beside the scene when it exists");
   command
       .add_option_function<std::vector<double>>(
           "--sky",

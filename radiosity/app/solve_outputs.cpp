@@ -94,6 +94,7 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
         {"spot", count("spot")},
         {"directional", count("directional")},
         {"sky", count("sky")},
+        {"environment", count("environment")},
         {"direct_light_rays", r.directLightRays},
         {"note",
          "the first shot of these lights at each element's receiver points enters the solve "

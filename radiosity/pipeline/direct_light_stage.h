@@ -27,12 +27,14 @@ constexpr int kSunDiscRays = 16;
 // times 0 outside the outer cone, 1 inside the inner cone, smoothstep in cos between; directional:
 // E cosθ (one ray, or kSunDiscRays stratified over its disc when its angular diameter > 0); sky:
 // π × the mean, over kSkyRays cosine-weighted rays, of the sky's radiance along those that leave
-// the scene above the horizon of `up` (πL × their fraction for a uniform sky). `key` seeds the
-// stratified jitter; `raysCast` counts the rays.
+// the scene above the horizon of `up` (πL × their fraction for a uniform sky); environment and CIE
+// clear sky: kSkyRays / 2 rays by the map's luminance and as many cosine-weighted, combined by the
+// balance heuristic. `key` seeds the stratified jitter; `raysCast` counts the rays.
 Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
                      const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast);
 
-// The first shot of the lights besides emissive polygons (point, spot, directional, sky): the
+// The first shot of the lights besides emissive polygons (point, spot, directional, sky,
+// environment): the
 // direct irradiance E_d at each element's receiver points (the analytic factors' Gauss points, or
 // the centroid with --receiver-points 1), averaged per element; the reflected part ρ E_d enters the
 // problem as emission, so the solver carries the interreflection on from there. Holds references

@@ -101,6 +101,11 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
     f.add(l.cosOuter);
     f.add(l.cosInner);
     f.add(l.angularDiameterDegrees);
+    f.add(static_cast<int>(l.skyModel));
+    f.add(l.map ? l.map->width() : 0);
+    f.add(l.map ? l.map->height() : 0);
+    if (l.map)
+      for (const Rgb& t : l.map->texels()) f.add(t);
   }
   f.add(static_cast<int>(o.solver));
   f.add(o.raysPerElement);

@@ -84,6 +84,10 @@ Rgb SceneLights::sampleArea(int k, const RenderScene& scene, const SurfaceHit& h
     w = sunDirection(light, u.x, u.y);
     radiance = sunRadiance(light);
     lightPdf = 1 / sunSolidAngle(light);
+  } else if (light.map) {  // an environment or a clear sky: by its map's luminance
+    w = light.map->sample(u.x, u.y, lightPdf);
+    radiance = skyRadiance(light, w);
+    lightPdf = light.map->pdf(w);  // the texel `radiance` came from, should rounding move w
   } else {  // the sky: cosine-weighted about the normal; the ground below the horizon is black
     w = cosineDirection(hit.normal, u.x, u.y);
     radiance = skyRadiance(light, w);
@@ -109,7 +113,7 @@ Rgb SceneLights::escapedRadiance(const Eigen::Vector3d& direction) const {
   Rgb sum;
   for (const int k : areaLights_) {
     const Light& light = lights_[k];
-    if (light.type == LightType::Sky)
+    if (light.type != LightType::Directional)
       sum += skyRadiance(light, direction);
     else if (insideSunDisc(light, direction))
       sum += sunRadiance(light);
@@ -123,7 +127,10 @@ Rgb SceneLights::escapedRadiance(const Eigen::Vector3d& direction, const Eigen::
   Rgb sum;
   for (const int k : areaLights_) {
     const Light& light = lights_[k];
-    if (light.type == LightType::Sky)
+    if (light.map)  // sampled by its map: the light sample's density there
+      sum += skyRadiance(light, direction) *
+             powerHeuristic(bsdfPerLight * bsdfPdf, light.map->pdf(direction));
+    else if (light.type == LightType::Sky)
       sum += skyRadiance(light, direction) * powerHeuristic(bsdfPerLight * bsdfPdf, bsdfPdf);
     else if (insideSunDisc(light, direction))
       sum += sunRadiance(light) * powerHeuristic(bsdfPerLight * bsdfPdf, 1 / sunSolidAngle(light));
@@ -145,6 +152,7 @@ Rgb SceneLights::unshadowedIrradiance(const Eigen::Vector3d& x, const Eigen::Vec
         sum += light.irradiance * std::max(0.0, n.dot(-light.direction));
         break;
       case LightType::Sky:
+      case LightType::Environment:
         sum += skyIrradiance(light, n);
         break;
     }

@@ -13,17 +13,20 @@ class RenderScene;
 struct SurfaceHit;
 struct RayCounts;
 
-// The scene's point, spot, directional and sky lights (scene/lights.h) as the camera renders see
-// them, next to the emissive polygons of EmitterSampler. Two kinds:
+// The scene's point, spot, directional, sky and environment lights (scene/lights.h) as the camera
+// renders see them, next to the emissive polygons of EmitterSampler. Two kinds:
 //  - delta lights (point, spot, a hard sun): one direction each, which no scattered ray can hit;
 //    next-event estimation alone sees them, exactly, with one shadow ray each;
-//  - area lights at infinity (a sun with an angular diameter, the sky): next-event estimation
-//    draws one direction per light (uniform over the sun's disc, density 1/Ω; cosine-weighted
-//    about the surface normal for the sky, density cosθ/π), and a cosine-sampled ray that leaves
-//    the scene sees them too; the two are weighed by multiple importance sampling (power
-//    heuristic, counting the rays of each kind), so both stay unbiased and neither is noisy.
-// Rays that leave the scene see the sky above its horizon (black ground below) and the sun's disc
-// of radiance E / (π sin²h) (light_shapes.h): camera rays too, so the background shows the sky.
+//  - area lights at infinity (a sun with an angular diameter, the sky, the environment):
+//    next-event estimation draws one direction per light (uniform over the sun's disc, density
+//    1/Ω; by the map's luminance for the environment and the CIE clear sky, density
+//    EnvironmentMap::pdf; cosine-weighted about the surface normal for the other skies, density
+//    cosθ/π), and a cosine-sampled ray that leaves the scene sees them too; the two are weighed by
+//    multiple importance sampling (power heuristic, counting the rays of each kind), so both stay
+//    unbiased and neither is noisy.
+// Rays that leave the scene see the sky above its horizon (black ground below), the environment
+// all round and the sun's disc of radiance E / (π sin²h) (light_shapes.h): camera rays too, so
+// the background shows them.
 class SceneLights {
  public:
   explicit SceneLights(const std::vector<Light>& lights);

@@ -43,14 +43,36 @@ bool insideSunDisc(const Light& light, const Eigen::Vector3d& direction) {
          direction.dot(-light.direction) >= sunCosHalfAngle(light);
 }
 
+double cieClearSkyRatio(const Eigen::Vector3d& direction, const Eigen::Vector3d& toSun,
+                        const Eigen::Vector3d& up) {
+  const double cosTheta = direction.dot(up);
+  if (!(cosTheta > 0)) return 0;
+  const auto indicatrix = [](double cosAngle) {
+    const double c = std::clamp(cosAngle, -1.0, 1.0);
+    return 0.91 + 10 * std::exp(-3 * std::acos(c)) + 0.45 * c * c;
+  };
+  const double gradation = 1 - std::exp(-0.32 / cosTheta);
+  return indicatrix(direction.dot(toSun)) * gradation /
+         (indicatrix(toSun.dot(up)) * (1 - std::exp(-0.32)));
+}
+
 Rgb skyRadiance(const Light& light, const Eigen::Vector3d& direction) {
+  if (light.type == LightType::Environment) return light.map->radiance(direction);
   const double cosZenith = direction.dot(light.up);
   if (!(cosZenith > 0)) return {};
-  return light.skyModel == SkyModel::CieOvercast ? light.radiance * ((1 + 2 * cosZenith) / 3)
-                                                 : light.radiance;
+  switch (light.skyModel) {
+    case SkyModel::Uniform:
+      break;
+    case SkyModel::CieOvercast:
+      return light.radiance * ((1 + 2 * cosZenith) / 3);
+    case SkyModel::CieClear:
+      return light.radiance * cieClearSkyRatio(direction, -light.direction, light.up);
+  }
+  return light.radiance;
 }
 
 Rgb skyIrradiance(const Light& light, const Eigen::Vector3d& n) {
+  if (light.map) return light.map->irradiance(n);
   const double cosA = std::clamp(n.dot(light.up), -1.0, 1.0);
   const double uniform = M_PI * (1 + cosA) / 2;  // ∫ cos over the lune
   if (light.skyModel == SkyModel::Uniform) return light.radiance * uniform;

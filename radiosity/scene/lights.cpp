@@ -4,14 +4,20 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
 #include "radiosity/scene/json_file.h"
+#include "radiosity/scene/light_shapes.h"
+#include "radiosity/scene/texture.h"
 
 namespace rad {
 namespace {
 
 constexpr double kDegrees = M_PI / 180;
+// The clear sky's sampling table: 1.4° texels, fine beside its circumsolar peak (e^(−3γ) halves
+// in 13°).
+constexpr int kClearSkyColumns = 256, kClearSkyRows = 128;
 
 // A key as a JSON pointer token (RFC 6901): "~" → "~0", "/" → "~1".
 std::string pointerToken(const std::string& key) {
@@ -45,6 +51,7 @@ class LightReader {
   }
 
   bool has(const std::string& key) const { return j_.contains(key); }
+  const std::string& file() const { return path_; }
 
   const nlohmann::json& at(const std::string& key) const {
     if (!j_.contains(key)) fail("", "missing key \"" + key + "\"");
@@ -123,32 +130,72 @@ Light readLight(const LightReader& r, const std::string& type) {
         r.fail("angular_diameter_degrees", "must be in [0, 90) degrees");
     }
   } else if (type == "sky") {
-    r.allowOnly({"type", "model", "radiance", "zenith_radiance", "up", "comment"});
+    r.allowOnly({"type", "model", "radiance", "zenith_radiance", "sun_direction", "up", "comment"});
     light.type = LightType::Sky;
     std::string model = "uniform";
     if (r.has("model")) {
-      if (!r.at("model").is_string()) r.fail("model", "must be a string (uniform, cie_overcast)");
+      if (!r.at("model").is_string())
+        r.fail("model", "must be a string (uniform, cie_overcast, cie_clear)");
       model = r.at("model").get<std::string>();
     }
     // Each model names its one radiance for what it is: the sky's, or the zenith's.
-    const char* key = "radiance";
+    const char* key = "zenith_radiance";
     if (model == "cie_overcast") {
       light.skyModel = SkyModel::CieOvercast;
-      key = "zenith_radiance";
-    } else if (model != "uniform") {
-      r.fail("model", "unknown sky model \"" + model + "\" (known: uniform, cie_overcast)");
+    } else if (model == "cie_clear") {
+      light.skyModel = SkyModel::CieClear;
+    } else if (model == "uniform") {
+      key = "radiance";
+    } else {
+      r.fail("model",
+             "unknown sky model \"" + model + "\" (known: uniform, cie_overcast, cie_clear)");
     }
-    const char* other = model == "cie_overcast" ? "radiance" : "zenith_radiance";
+    const char* other = model == "uniform" ? "zenith_radiance" : "radiance";
     if (r.has(other))
       r.fail(other, "a " + model + " sky takes \"" + key + "\", not \"" + other + "\"");
     light.radiance = r.colour(key);
     if (r.has("up")) light.up = r.direction("up");
+    if (light.skyModel == SkyModel::CieClear) {
+      const Eigen::Vector3d sun = r.direction("sun_direction");
+      // The model describes a sky by day: the sun at or above the horizon.
+      if (sun.dot(light.up) > 0)
+        r.fail("sun_direction",
+               "the sun must be above the horizon (sun_direction is the way its light travels: "
+               "downwards, against up)");
+      return cieClearSky(light.radiance, sun, light.up);
+    }
+    if (r.has("sun_direction"))
+      r.fail("sun_direction", "only a cie_clear sky takes \"sun_direction\"");
   } else if (type == "environment") {
-    r.fail("type",
-           "light type \"environment\" is not supported yet (supported: point, spot, "
-           "directional, sky)");
+    r.allowOnly({"type", "file", "up", "scale", "comment"});
+    if (!r.at("file").is_string() || r.at("file").get<std::string>().empty())
+      r.fail("file", "must be the image's file name (a non-empty string)");
+    double scale = 1;
+    if (r.has("scale")) {
+      scale = r.number("scale");
+      if (scale < 0) r.fail("scale", "must not be negative");
+    }
+    const Eigen::Vector3d up = r.has("up") ? r.direction("up") : Eigen::Vector3d(0, 1, 0);
+    // Relative to the lights file, as a scene's textures are to their MTL.
+    std::filesystem::path image(r.at("file").get<std::string>());
+    if (image.is_relative()) image = std::filesystem::path(r.file()).parent_path() / image;
+    std::error_code error;
+    // Only a regular file: a device or a pipe named by mistake (or by a fuzzer) would never end.
+    if (!std::filesystem::is_regular_file(image, error))
+      r.fail("file", image.string() + ": cannot open the environment image");
+    Texture texture;
+    try {
+      // Radiance HDR decodes to linear floats as stored; 8-bit images (PNG, JPEG, …) are
+      // sRGB-encoded colour, decoded to linear like the scene's colour textures.
+      texture = loadTextureFile(image.string(), TextureEncoding::Srgb);
+    } catch (const InputError& e) {
+      r.fail("file", std::string("environment image: ") + e.what());
+    }
+    return environmentLight(texture.width, texture.height,
+                            EnvironmentMap::scaledTexels(texture, scale), up);
   } else {
-    r.fail("type", "unknown light type \"" + type + "\" (known: point, spot, directional, sky)");
+    r.fail("type", "unknown light type \"" + type +
+                       "\" (known: point, spot, directional, sky, environment)");
   }
   return light;
 }
@@ -165,6 +212,8 @@ std::string lightTypeName(LightType type) {
       return "directional";
     case LightType::Sky:
       return "sky";
+    case LightType::Environment:
+      return "environment";
   }
   return "?";
 }
@@ -187,7 +236,9 @@ std::vector<Light> loadLights(const std::string& path) {
     const LightReader reader(path, file.text, list[i], pointer);
     if (!list[i].is_object()) reader.fail("", "each light must be a JSON object");
     if (!list[i].contains("type") || !list[i]["type"].is_string())
-      reader.fail("type", "each light needs a \"type\" string (point, spot, directional, sky)");
+      reader.fail("type",
+                  "each light needs a \"type\" string (point, spot, directional, sky, "
+                  "environment)");
     lights.push_back(readLight(reader, list[i]["type"].get<std::string>()));
   }
   return lights;
@@ -216,6 +267,40 @@ Light sunLight(const Eigen::Vector3d& direction, const Rgb& irradiance) {
   light.direction = direction.normalized();
   light.irradiance = irradiance;
   light.angularDiameterDegrees = 0.53;
+  return light;
+}
+
+Light cieClearSky(const Rgb& zenithRadiance, const Eigen::Vector3d& sunTravel,
+                  const Eigen::Vector3d& up) {
+  Light light;
+  light.type = LightType::Sky;
+  light.skyModel = SkyModel::CieClear;
+  light.radiance = zenithRadiance;
+  light.direction = sunTravel.normalized();
+  light.up = up.normalized();
+  RAD_CHECK_MSG(light.direction.dot(light.up) <= 1e-12, "the clear sky's sun below the horizon");
+  // Texel centres' values: the sampling only needs the shape; rows split at the horizon exactly
+  // (an even count), so the ground rows are 0 and every direction above it has density.
+  std::vector<Rgb> table(static_cast<std::size_t>(kClearSkyColumns) * kClearSkyRows);
+  const EnvironmentMap frame(1, 1, {Rgb()}, light.up);
+  for (int y = 0; y < kClearSkyRows; ++y)
+    for (int x = 0; x < kClearSkyColumns; ++x) {
+      const Eigen::Vector3d d =
+          frame.direction((x + 0.5) / kClearSkyColumns, (y + 0.5) / kClearSkyRows);
+      table[static_cast<std::size_t>(y) * kClearSkyColumns + x] =
+          zenithRadiance * cieClearSkyRatio(d, -light.direction, light.up);
+    }
+  light.map =
+      std::make_shared<EnvironmentMap>(kClearSkyColumns, kClearSkyRows, std::move(table), light.up);
+  return light;
+}
+
+Light environmentLight(int width, int height, std::vector<Rgb> radiance,
+                       const Eigen::Vector3d& up) {
+  Light light;
+  light.type = LightType::Environment;
+  light.up = up.normalized();
+  light.map = std::make_shared<EnvironmentMap>(width, height, std::move(radiance), light.up);
   return light;
 }
 

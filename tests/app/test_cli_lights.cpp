@@ -3,12 +3,15 @@
 // writes nothing; every render method renders a scene lit only by these lights.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "radiosity/output/image_io.h"
+#include "tests/support/hdr_writer.h"
 #include "tests/support/run_command.h"
 
 namespace rad {
@@ -69,7 +72,7 @@ INSTANTIATE_TEST_SUITE_P(
                   ":3: /lights/1/type", "unknown light type \"area\""},
         BadLights{"environment",
                   "{\"lights\": [{\"type\": \"environment\", \"file\": \"sky.hdr\"}]}",
-                  ":1: /lights/0/type", "not supported yet"},
+                  ":1: /lights/0/file", "sky.hdr: cannot open the environment image"},
         BadLights{"negative_intensity",
                   "{\"lights\": [\n {\"type\": \"point\",\n  \"position\": [0, 1, 0],\n"
                   "  \"intensity\": [1, -1, 1]}]}",
@@ -120,6 +123,40 @@ TEST(CliLights, TheSidecarLightsASceneWithoutEmittersAndSummaryCountsThem) {
   EXPECT_EQ(summary["lights"]["directional"], 1);
   EXPECT_EQ(summary["lights"]["spot"], 0);
   EXPECT_GT(summary["lights"]["direct_light_rays"].get<double>(), 0);
+  fs::remove_all(dir);
+}
+
+// An environment image beside the lights file: radiance 1 above the horizon, 0.25 below. The
+// solve counts it; the floor (ρ = 0.5) sees the upper half only, so `direct` (the map's irradiance
+// table, within 1%) shows ρL = 0.5 at the centre, and the corner, past the floor and below the
+// horizon, sees the image's ground half exactly: 0.25, not the sky's black ground.
+TEST(CliLights, AnEnvironmentImageLightsTheSceneAndShowsItsGroundHalf) {
+  const fs::path dir = testing::scratchPath("lights_environment");
+  const fs::path scene = writeFloorScene(dir);
+  std::vector<Rgb> texels(16 * 8, Rgb::all(0.25));
+  std::fill(texels.begin(), texels.begin() + 16 * 4, Rgb::all(1));
+  fs::create_directories(dir / "maps");
+  testing::writeHdr((dir / "maps" / "sky.hdr").string(), 16, 8, texels);
+  std::ofstream(dir / "floor.lights.json")
+      << R"({"lights": [{"type": "environment", "file": "maps/sky.hdr"}]})";
+  const auto solve = testing::runRadiosity("solve " + scene.string() + " --out " +
+                                           (dir / "solve").string() + " --elements 32");
+  ASSERT_EQ(solve.exitCode, 0) << solve.stderrText;
+  EXPECT_EQ(readJson(dir / "solve" / "summary.json")["lights"]["environment"], 1);
+  for (const std::string method : {"direct", "path --spp 4"}) {
+    const fs::path out = dir / "out";
+    const auto result = testing::runRadiosity("render " + scene.string() + " --method " + method +
+                                              " --out " + out.string());
+    ASSERT_EQ(result.exitCode, 0) << method << "\n" << result.stderrText;
+    const ImageRgb image = readExr((out / "render.exr").string());
+    for (int c = 0; c < 3; ++c) {
+      if (method == "direct") {
+        EXPECT_NEAR(image.at(16, 12)[c], 0.5, 0.005);
+      }
+      EXPECT_NEAR(image.at(0, 0)[c], 0.25, 1e-6) << method;
+    }
+    fs::remove_all(out);
+  }
   fs::remove_all(dir);
 }
 

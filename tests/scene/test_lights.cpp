@@ -10,7 +10,9 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/scene/json_file.h"
+#include "radiosity/scene/light_shapes.h"
 #include "radiosity/scene/lights.h"
+#include "tests/support/hdr_writer.h"
 
 namespace rad {
 namespace {
@@ -89,9 +91,9 @@ TEST(Lights, ReadsTheCieOvercastSkyAndRefusesUnknownModelsAndTheOtherModelsRadia
     std::string text, pointer, phrase;
   };
   for (const Bad& bad : std::vector<Bad>{
-           {"{\"lights\": [\n{\"type\": \"sky\", \"model\": \"cie_clear\", \"radiance\": [1, 1, "
+           {"{\"lights\": [\n{\"type\": \"sky\", \"model\": \"cie_hazy\", \"radiance\": [1, 1, "
             "1]}]}",
-            "/lights/0/model", "unknown sky model \"cie_clear\""},
+            "/lights/0/model", "unknown sky model \"cie_hazy\""},
            {"{\"lights\": [\n{\"type\": \"sky\", \"model\": 3, \"radiance\": [1, 1, 1]}]}",
             "/lights/0/model", "must be a string"},
            {"{\"lights\": [\n{\"type\": \"sky\", \"model\": \"cie_overcast\", \"radiance\": [1, 1, "
@@ -115,6 +117,116 @@ TEST(Lights, ReadsTheCieOvercastSkyAndRefusesUnknownModelsAndTheOtherModelsRadia
       EXPECT_NE(std::string(e.what()).find(bad.phrase), std::string::npos) << e.what();
     }
   }
+  fs::remove_all(dir);
+}
+
+// An error that must name the lights file, the line and the JSON pointer, and say `phrase`.
+void expectRefused(const std::string& path, const std::string& text, int line,
+                   const std::string& pointer, const std::string& phrase) {
+  std::ofstream(path) << text;
+  try {
+    loadLights(path);
+    ADD_FAILURE() << "accepted " << text;
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.line(), line) << text;
+    EXPECT_NE(std::string(e.what()).find(pointer + ": "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
+  }
+}
+
+TEST(Lights, ReadsTheCieClearSkyWithItsSunAndRefusesItWithoutOne) {
+  const fs::path dir = scratch("clear");
+  const std::string path = (dir / "l.json").string();
+  std::ofstream(path) << R"({"lights": [
+    {"type": "sky", "model": "cie_clear", "zenith_radiance": [1, 2, 3],
+     "sun_direction": [0, -1, -1], "up": [0, 2, 0]}]})";
+  const std::vector<Light> lights = loadLights(path);
+  ASSERT_EQ(lights.size(), 1u);
+  EXPECT_EQ(lights[0].skyModel, SkyModel::CieClear);
+  EXPECT_LT((lights[0].direction - Eigen::Vector3d(0, -1, -1).normalized()).norm(), 1e-15);
+  EXPECT_EQ(lights[0].up, Eigen::Vector3d(0, 1, 0));
+  ASSERT_NE(lights[0].map, nullptr);                           // its sampling table
+  EXPECT_NEAR(skyRadiance(lights[0], {0, 1, 0}).b, 3, 1e-12);  // the zenith's radiance
+  const std::string head = "{\"lights\": [\n{\"type\": \"sky\", ";
+  expectRefused(path, head + "\"model\": \"cie_clear\", \"zenith_radiance\": [1, 1, 1]}]}", 2,
+                "/lights/0", "missing key \"sun_direction\"");
+  expectRefused(path,
+                head +
+                    "\"model\": \"cie_clear\", \"zenith_radiance\": [1, 1, 1], "
+                    "\"sun_direction\": [0, 1, 1]}]}",
+                2, "/lights/0/sun_direction", "above the horizon");
+  expectRefused(path,
+                head +
+                    "\"model\": \"cie_clear\", \"zenith_radiance\": [1, 1, 1], "
+                    "\"sun_direction\": [0, 0, 0]}]}",
+                2, "/lights/0/sun_direction", "non-zero direction");
+  expectRefused(path, head + "\"radiance\": [1, 1, 1], \"sun_direction\": [0, -1, 0]}]}", 2,
+                "/lights/0/sun_direction", "only a cie_clear sky");
+  fs::remove_all(dir);
+}
+
+TEST(Lights, ReadsAnEnvironmentImageRelativeToTheLightsFileScaled) {
+  const fs::path dir = scratch("environment");
+  fs::create_directories(dir / "maps");
+  // 4 × 2: the top row 1, 2, 3, 4 (grey), the bottom row 0.5.
+  testing::writeHdr((dir / "maps" / "sky.hdr").string(), 4, 2,
+                    {Rgb::all(1), Rgb::all(2), Rgb::all(3), Rgb::all(4), Rgb::all(0.5),
+                     Rgb::all(0.5), Rgb::all(0.5), Rgb::all(0.5)});
+  const std::string path = (dir / "l.json").string();
+  std::ofstream(path) << R"({"lights": [
+    {"type": "environment", "file": "maps/sky.hdr", "up": [0, 0, 1], "scale": 2},
+    {"type": "environment", "file": "maps/sky.hdr", "comment": "defaults: up +y, scale 1"}]})";
+  const std::vector<Light> lights = loadLights(path);
+  ASSERT_EQ(lights.size(), 2u);
+  EXPECT_EQ(lights[0].type, LightType::Environment);
+  EXPECT_EQ(lightTypeName(lights[0].type), "environment");
+  ASSERT_NE(lights[0].map, nullptr);
+  EXPECT_EQ(lights[0].map->width(), 4);
+  EXPECT_EQ(lights[0].map->height(), 2);
+  EXPECT_EQ(lights[0].up, Eigen::Vector3d(0, 0, 1));
+  // Up +z (Blender's frame): u = 0.5 − atan2(y, x)/2π, so a little off +y towards +x is just
+  // right of the quarter column (the second texel, 2 × scale 2), a little off +x towards −y just
+  // right of the centre (the third, 3 × 2); the ground half is the bottom row.
+  EXPECT_EQ(skyRadiance(lights[0], Eigen::Vector3d(0.2, 1, 0.5).normalized()).r, 4);
+  EXPECT_EQ(skyRadiance(lights[0], Eigen::Vector3d(1, -0.1, 0.5).normalized()).r, 6);
+  EXPECT_EQ(skyRadiance(lights[0], Eigen::Vector3d(0.3, 0.2, -0.5).normalized()).r, 1);
+  EXPECT_EQ(lights[1].up, Eigen::Vector3d(0, 1, 0));
+  // Up +y: the quarter column looks along −z (the three-quarter one along +z), so −z turned a
+  // little towards −x is left of it (the first texel), +z turned towards +x left of the
+  // three-quarter one.
+  EXPECT_EQ(skyRadiance(lights[1], Eigen::Vector3d(-0.2, 0.5, -1).normalized()).r, 1);
+  EXPECT_EQ(skyRadiance(lights[1], Eigen::Vector3d(0.2, 0.5, 1).normalized()).r, 3);
+  fs::remove_all(dir);
+}
+
+TEST(Lights, RefusesBadEnvironmentEntriesNamingTheFileAndPointer) {
+  const fs::path dir = scratch("environment_bad");
+  testing::writeHdr((dir / "sky.hdr").string(), 2, 1, {Rgb::all(1), Rgb::all(1)});
+  std::ofstream(dir / "not_an_image.hdr") << "hello";
+  const std::string path = (dir / "l.json").string();
+  const std::string head = "{\"lights\": [\n{\"type\": \"environment\", ";
+  expectRefused(path, head + "\"file\": \"missing.hdr\"}]}", 2, "/lights/0/file",
+                (dir / "missing.hdr").string() + ": cannot open the environment image");
+  expectRefused(path, head + "\"file\": \"not_an_image.hdr\"}]}", 2, "/lights/0/file",
+                (dir / "not_an_image.hdr").string() + ": not a readable image");
+  expectRefused(path, head + "\"file\": \".\"}]}", 2, "/lights/0/file",
+                "cannot open the environment image");
+  expectRefused(path, head + "\"file\": \"sky.hdr\", \"scale\": -1}]}", 2, "/lights/0/scale",
+                "must not be negative");
+  // JSON holds no NaN or infinity: such a scale never parses.
+  for (const char* scale : {"NaN", "1e999"}) {
+    std::ofstream(path) << head + "\"file\": \"sky.hdr\", \"scale\": " + scale + "}]}";
+    EXPECT_THROW(loadLights(path), InputError) << scale;
+  }
+  expectRefused(path, head + "\"file\": \"sky.hdr\", \"scale\": \"2\"}]}", 2, "/lights/0/scale",
+                "must be a number");
+  expectRefused(path, head + "\"file\": \"sky.hdr\", \"rotation\": 90}]}", 2, "/lights/0/rotation",
+                "unknown key \"rotation\"");
+  expectRefused(path, head + "\"file\": 3}]}", 2, "/lights/0/file", "must be the image's file");
+  expectRefused(path, head + "\"scale\": 1}]}", 2, "/lights/0", "missing key \"file\"");
+  expectRefused(path, head + "\"file\": \"sky.hdr\", \"up\": [0, 0, 0]}]}", 2, "/lights/0/up",
+                "non-zero direction");
   fs::remove_all(dir);
 }
 
