@@ -34,7 +34,6 @@ class ElementExposure {
   ElementExposure() = default;  // nothing buried anywhere
   ElementExposure(const PatchMesh& mesh, const RayCaster& rays);
 
-  bool empty() const { return buried_.empty(); }
   // Bit y·8 + x set: cell x (along s), y (along t) of element e is buried.
   uint64_t buriedCells(int e) const { return buried_.empty() ? 0 : buried_[e]; }
   // The exposed share of element e's area, at least kMinFraction.

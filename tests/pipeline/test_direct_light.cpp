@@ -268,13 +268,18 @@ TEST(DirectLight, SkyOnATiltedPlaneIsWithinFourSigmaAndDependsOnTheSeedOnly) {
   EXPECT_NEAR(mean, p, 4 * std::sqrt(p * (1 - p) / (3.0 * 64 * a.size())));
 }
 
-TEST(DirectLight, UniformSkyDoesNotEnterAClosedBox) {
-  Scene scene = sceneWith({sky({1, 1, 1})});
+// The six faces of the unit cube, looking in: no light from outside reaches them.
+void addClosedUnitBox(Scene& scene) {
   const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                           {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   for (const auto& f : std::vector<std::array<int, 4>>{
            {0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 5, 6, 2}})
     addQuad(scene, {p[f[0]], p[f[1]], p[f[2]], p[f[3]]});
+}
+
+TEST(DirectLight, UniformSkyDoesNotEnterAClosedBox) {
+  Scene scene = sceneWith({sky({1, 1, 1})});
+  addClosedUnitBox(scene);
   const SolveResult result = solveScene(scene, quickOptions(384));
   for (int e = 0; e < result.solution.mesh->elementCount(); ++e)
     EXPECT_TRUE(result.solution.radiosity[e].isZero()) << "element " << e;
@@ -339,11 +344,7 @@ TEST(DirectLight, ConstantEnvironmentGivesRhoPiLFacingUpAndSideways) {
 
 TEST(DirectLight, EnvironmentDoesNotEnterAClosedBox) {
   Scene scene = sceneWith({environmentFromFile("box", 16, 8, std::vector<Rgb>(128, Rgb::all(1)))});
-  const std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
-                                          {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  for (const auto& f : std::vector<std::array<int, 4>>{
-           {0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 5, 6, 2}})
-    addQuad(scene, {p[f[0]], p[f[1]], p[f[2]], p[f[3]]});
+  addClosedUnitBox(scene);
   const SolveResult result = solveScene(scene, quickOptions(384));
   for (int e = 0; e < result.solution.mesh->elementCount(); ++e)
     EXPECT_TRUE(result.solution.radiosity[e].isZero()) << "element " << e;

@@ -26,6 +26,18 @@ std::vector<unsigned char> tga(int w, int h, const std::vector<unsigned char>& r
   return out;
 }
 
+// The message of the InputError that decoding `bytes` as `name` throws; a test failure (and "")
+// when it decodes.
+std::string decodeErrorOf(const std::vector<unsigned char>& bytes, const std::string& name) {
+  try {
+    decodeTexture(bytes.data(), bytes.size(), name, TextureEncoding::Srgb);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << name << " decoded without an error";
+  return "";
+}
+
 TEST(Texture, SrgbColourMapsDecodeToLinearAndDataMapsDoNot) {
   const auto bytes = tga(2, 1, {0, 188, 255, 255, 255, 255});
   const Texture srgb = decodeTexture(bytes.data(), bytes.size(), "t.tga", TextureEncoding::Srgb);
@@ -86,23 +98,15 @@ TEST(Texture, AHeaderClaimingMoreTexelsThanTheCapIsRefusedBeforeDecoding) {
   // the size it claims.
   const std::vector<unsigned char> header = {0, 0, 2, 0, 0,  0, 0,  0,  0,
                                              0, 0, 0, 0, 32, 1, 32, 24, 0};
-  try {
-    decodeTexture(header.data(), header.size(), "huge.tga", TextureEncoding::Srgb);
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("huge.tga"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("8192×8193"), std::string::npos) << e.what();
-  }
+  const std::string huge = decodeErrorOf(header, "huge.tga");
+  EXPECT_NE(huge.find("huge.tga"), std::string::npos) << huge;
+  EXPECT_NE(huge.find("8192×8193"), std::string::npos) << huge;
   // A header whose size its data cannot hold: 1000 × 1000 texels in 18 bytes.
   const std::vector<unsigned char> truncated = {0, 0, 2, 0,    0, 0,    0, 0,  0,
                                                 0, 0, 0, 0xe8, 3, 0xe8, 3, 24, 0};
-  try {
-    decodeTexture(truncated.data(), truncated.size(), "cut.tga", TextureEncoding::Srgb);
-    FAIL() << "no error";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("cut.tga"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("corrupt header"), std::string::npos) << e.what();
-  }
+  const std::string cut = decodeErrorOf(truncated, "cut.tga");
+  EXPECT_NE(cut.find("cut.tga"), std::string::npos) << cut;
+  EXPECT_NE(cut.find("corrupt header"), std::string::npos) << cut;
   // A caller's smaller cap applies in the same way; an image within it decodes.
   const auto small = tga(2, 2, std::vector<unsigned char>(12, 128));
   EXPECT_THROW(decodeTexture(small.data(), small.size(), "s.tga", TextureEncoding::Srgb, 3),
