@@ -7,32 +7,10 @@
 #include <memory>
 
 #include "radiosity/core/errors.h"
-
-// stb's image decoder, compiled privately into this file only (libstb-dev's header).
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_NO_PSD
-#define STBI_NO_GIF
-#define STBI_NO_PIC
-#define STBI_NO_PNM
-#define STBI_FAILURE_USERMSG
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#include <stb/stb_image.h>
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+#include "radiosity/scene/image_decode.h"
 
 namespace rad {
 namespace {
-
-// No image format stb decodes packs more texels into one byte: a 1-bit PNG at deflate's largest
-// ratio (1032:1) gives about 8,300. A header claiming more states a size its data cannot hold
-// (stb would pad the missing rows, and spend seconds doing so on a 60-byte file).
-constexpr long long kMaxTexelsPerByte = 16384;
 
 int wrap(int i, int n) {
   const int m = i % n;
@@ -173,43 +151,21 @@ double Texture::averageAlpha(const std::array<Eigen::Vector2d, 3>& uv) const {
 
 Texture decodeTexture(const unsigned char* bytes, std::size_t size, const std::string& source,
                       TextureEncoding encoding, long long maxTexels) {
-  if (size == 0 || size > static_cast<std::size_t>(INT32_MAX))
-    throw InputError(source, 0, "not a readable image (" + std::to_string(size) + " bytes)");
-  const int length = static_cast<int>(size);
-  int w = 0, h = 0, channels = 0;
-  if (!stbi_info_from_memory(bytes, length, &w, &h, &channels))
-    throw InputError(
-        source, 0,
-        std::string("not a readable image (PNG, JPEG, TGA, BMP or HDR): ") + stbi_failure_reason());
-  const long long texels = static_cast<long long>(w) * h;
-  if (w <= 0 || h <= 0 || texels > maxTexels)
-    throw InputError(source, 0,
-                     "image of " + std::to_string(w) + "×" + std::to_string(h) + " texels refused");
-  if (texels > kMaxTexelsPerByte * static_cast<long long>(size))
-    throw InputError(source, 0,
-                     "image header claims " + std::to_string(w) + "×" + std::to_string(h) +
-                         " texels in only " + std::to_string(size) + " bytes: corrupt header");
+  const DecodedImage image = decodeImage(bytes, size, source, maxTexels);
   Texture texture;
   texture.source = source;
-  texture.width = w;
-  texture.height = h;
-  texture.rgba.resize(static_cast<std::size_t>(w) * h * 4);
-  const bool hdr = stbi_is_hdr_from_memory(bytes, length);
-  if (hdr) {
-    std::unique_ptr<float, void (*)(void*)> data(
-        stbi_loadf_from_memory(bytes, length, &w, &h, &channels, 4), stbi_image_free);
-    if (!data) throw InputError(source, 0, std::string("corrupt image: ") + stbi_failure_reason());
-    std::copy(data.get(), data.get() + texture.rgba.size(), texture.rgba.begin());
+  texture.width = image.width;
+  texture.height = image.height;
+  if (image.isFloat()) {
+    texture.rgba = image.rgbaFloat;
   } else {
-    std::unique_ptr<unsigned char, void (*)(void*)> data(
-        stbi_load_from_memory(bytes, length, &w, &h, &channels, 4), stbi_image_free);
-    if (!data) throw InputError(source, 0, std::string("corrupt image: ") + stbi_failure_reason());
     float table[256];
     for (int i = 0; i < 256; ++i)
       table[i] = static_cast<float>(encoding == TextureEncoding::Srgb ? srgbToLinear(i / 255.0)
                                                                       : i / 255.0);
-    for (std::size_t i = 0; i < texture.rgba.size(); ++i)
-      texture.rgba[i] = (i % 4 == 3) ? data.get()[i] / 255.0f : table[data.get()[i]];
+    texture.rgba.resize(image.rgba8.size());
+    for (std::size_t i = 0; i < image.rgba8.size(); ++i)
+      texture.rgba[i] = (i % 4 == 3) ? image.rgba8[i] / 255.0f : table[image.rgba8[i]];
   }
   for (float& v : texture.rgba)
     if (!std::isfinite(v) || v < 0) v = 0;  // HDR files can hold anything

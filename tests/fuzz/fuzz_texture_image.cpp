@@ -1,9 +1,10 @@
-// libFuzzer target: image bytes through decodeTexture() (radiosity/scene/texture.h, stb_image),
+// libFuzzer target: image bytes through decodeTexture() (radiosity/scene/texture.h: libpng,
+// libjpeg-turbo, stb_image for TGA, BMP and HDR),
 // as an MTL's map_Kd/map_Ke/map_d file or an image embedded in a .glb reaches it, in both
 // encodings. An image it accepts must have its stated size, finite non-negative values (alpha in
 // [0, 1]), and give finite look-ups and area averages.
 // Findings: crashes, sanitizer reports, and any exception other than InputError.
-// Images are capped at 2^18 texels here: a 16 KB input may claim 2^26 texels, which stb decodes
+// Images are capped at 2^18 texels here: a 16 KB input may claim 2^26 texels, which a decoder fills
 // (padding the missing rows) in seconds under the sanitizers; the cap itself is tested in
 // test_texture.cpp, and the fuzzer's time is better spent on the decoders' many small images.
 #include <array>
