@@ -35,7 +35,8 @@ Rgb fromPointLight(const Light& light, const RayCaster& rays, const Eigen::Vecto
 }
 
 Rgb fromDirectional(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-                    const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast) {
+                    const Eigen::Vector3d& n, const DirectRays& count, uint64_t key,
+                    uint64_t& raysCast) {
   const Eigen::Vector3d toSun = -light.direction;
   const double inf = std::numeric_limits<double>::infinity();
   if (light.angularDiameterDegrees <= 0) {
@@ -45,52 +46,54 @@ Rgb fromDirectional(const Light& light, const RayCaster& rays, const Eigen::Vect
     if (rays.occluded(rays.liftOff(x, n, toSun), toSun, inf)) return {};
     return light.irradiance * cosTheta;
   }
-  // Directions uniform in solid angle over the sun's disc, stratified 4 × 4: the mean of
+  // Directions uniform in solid angle over the sun's disc, stratified sunStrata²: the mean of
   // L cosθ / (1/Ω) with the disc's radiance L (light_shapes.h).
   Rng rng(key);
   double sum = 0;
-  for (int k = 0; k < kSunDiscRays; ++k) {
-    const double u1 = (k % 4 + rng.uniform()) / 4, u2 = (k / 4 + rng.uniform()) / 4;
+  const int m = count.sunStrata, discRays = m * m;
+  for (int k = 0; k < discRays; ++k) {
+    const double u1 = (k % m + rng.uniform()) / m, u2 = (k / m + rng.uniform()) / m;
     const Eigen::Vector3d w = sunDirection(light, u1, u2);
     const double cosTheta = n.dot(w);
     if (cosTheta <= 0) continue;
     ++raysCast;
     if (!rays.occluded(rays.liftOff(x, n, w), w, inf)) sum += cosTheta;
   }
-  return sunRadiance(light) * (sunSolidAngle(light) * sum / kSunDiscRays);
+  return sunRadiance(light) * (sunSolidAngle(light) * sum / discRays);
 }
 
 Rgb fromSky(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-            const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast) {
+            const Eigen::Vector3d& n, const DirectRays& count, uint64_t key, uint64_t& raysCast) {
   const Frame frame(n);
   Rng rng(key);
   const double inf = std::numeric_limits<double>::infinity();
   Rgb open;  // the radiance of the rays that reach the sky
-  for (int k = 0; k < kSkyRays; ++k) {
-    const double u1 = (k % 8 + rng.uniform()) / 8, u2 = (k / 8 + rng.uniform()) / 8;
+  const int m = count.skyStrata, skyRays = m * m;
+  for (int k = 0; k < skyRays; ++k) {
+    const double u1 = (k % m + rng.uniform()) / m, u2 = (k / m + rng.uniform()) / m;
     const Eigen::Vector3d w = frame.toWorld(cosineWeightedDirection(u1, u2));
     const Rgb radiance = skyRadiance(light, w);
     if (radiance.isZero()) continue;  // below the horizon: the ground is black
     ++raysCast;
     if (!rays.occluded(rays.liftOff(x, n, w), w, inf)) open += radiance;
   }
-  return open * (M_PI / kSkyRays);
+  return open * (M_PI / skyRays);
 }
 
 // A light sampled by its map (an environment, a clear sky): half the rays by the map's luminance,
-// half cosine-weighted, each stratified (8 × 4) and combined by the balance heuristic, so a sun in
-// the image is found and a dim, wide map stays smooth: E = Σ L cosθ / (n (p_map + p_cos)) over
-// both sets' unshadowed rays, n rays in each.
+// half cosine-weighted, each stratified (skyStrata × skyStrata / 2) and combined by the balance
+// heuristic, so a sun in the image is found and a dim, wide map stays smooth: E = Σ L cosθ / (n
+// (p_map + p_cos)) over both sets' unshadowed rays, n rays in each.
 Rgb fromMap(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-            const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast) {
+            const Eigen::Vector3d& n, const DirectRays& count, uint64_t key, uint64_t& raysCast) {
   const Frame frame(n);
   Rng rng(key);
   const double inf = std::numeric_limits<double>::infinity();
-  constexpr int kEach = kSkyRays / 2;
+  const int m = count.skyStrata, kEach = m * m / 2;
   Rgb sum;
   for (int k = 0; k < 2 * kEach; ++k) {
     const int s = k % kEach;
-    const double u1 = (s % 8 + rng.uniform()) / 8, u2 = (s / 8 + rng.uniform()) / 4;
+    const double u1 = (s % m + rng.uniform()) / m, u2 = (s / m + rng.uniform()) / (m / 2);
     double mapPdf = 0;
     const Eigen::Vector3d w = k < kEach ? light.map->sample(u1, u2, mapPdf)
                                         : frame.toWorld(cosineWeightedDirection(u1, u2));
@@ -108,17 +111,18 @@ Rgb fromMap(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
 }  // namespace
 
 Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-                     const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast) {
+                     const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast,
+                     const DirectRays& count) {
   switch (light.type) {
     case LightType::Point:
     case LightType::Spot:
       return fromPointLight(light, rays, x, n, raysCast);
     case LightType::Directional:
-      return fromDirectional(light, rays, x, n, key, raysCast);
+      return fromDirectional(light, rays, x, n, count, key, raysCast);
     case LightType::Sky:
     case LightType::Environment:
-      return light.map ? fromMap(light, rays, x, n, key, raysCast)
-                       : fromSky(light, rays, x, n, key, raysCast);
+      return light.map ? fromMap(light, rays, x, n, count, key, raysCast)
+                       : fromSky(light, rays, x, n, count, key, raysCast);
   }
   return {};
 }
@@ -130,17 +134,48 @@ DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, co
       rays_(rays),
       exposure_(exposure),
       seed_(options.seed),
-      receiverPoints_(options.receiverPoints) {}
+      receiverPoints_(options.receiverPoints),
+      keepPoints_(options.formFactors == FormFactorMethod::Analytic &&
+                  options.receiverPoints == 3) {}
 
 void DirectLightStage::compute(int e) {
   const Eigen::Vector3d n = mesh_.normal(e);
   const auto corners = mesh_.corners(e);
+  const bool partlyBuried = exposure_ != nullptr && exposure_->buriedCells(e) != 0;
+  uint64_t cast = 0;
+  // The element's mean E_d, which the solver takes: stratified over its exposed area (the (s, t)
+  // square maps onto the triangle preserving area, so its strata are equal areas of the element).
+  // Not the receiver points: at three fixed interior points the light that pools along an
+  // element's edges (under an arcade, beside a wall) is never seen; on the shared atrium that
+  // made the indirectly lit parts 5-15% too dark at the default element size (docs/physics.md).
+  Rng jitter(streamKey(seed_ ^ 0x617265616d65616eull, static_cast<uint64_t>(e)));
+  Rgb areaSum;
+  int used = 0;
+  for (int j = 0; j < kAreaStrata * kAreaStrata; ++j) {
+    const double s = (j % kAreaStrata + jitter.uniform()) / kAreaStrata;
+    const double t = (j / kAreaStrata + jitter.uniform()) / kAreaStrata;
+    if (partlyBuried && exposure_->buried(e, s, t)) continue;
+    const double r = std::sqrt(s);
+    const Eigen::Vector3d x = (1 - r) * corners[0] + r * (1 - t) * corners[1] + r * t * corners[2];
+    for (size_t l = 0; l < scene_.lights.size(); ++l)
+      areaSum += directIrradiance(
+          scene_.lights[l], rays_, x, n,
+          streamKey(seed_ ^ 0x617265616d65616eull, static_cast<uint64_t>(e), 1 + l * 64 + j), cast,
+          kAreaRays);
+    ++used;
+  }
+  irradiance_[e] = areaSum / std::max(used, 1);
+  elementRays_[e] = cast;
+  if (!keepPoints_ && used > 0) return;
+  // E_d at the receiver points: how the direct light varies inside the element, for the displayed
+  // solution (addPointVariation); also the element's E_d where no stratum landed in its exposed
+  // part (a sliver of it).
   auto points = receiverPoints(corners, receiverPoints_);
   const int count = receiverPoints_ == 1 ? 1 : 3;
   // Receiver points in a buried part of the element see no light, whatever reaches the rest.
   std::array<bool, 3> exposed{true, true, true};
   int exposedCount = count;
-  if (exposure_ != nullptr && exposure_->buriedCells(e) != 0) {
+  if (partlyBuried) {
     exposedCount = 0;
     for (int k = 0; k < count; ++k) {
       const Eigen::Vector3d w =
@@ -155,7 +190,6 @@ void DirectLightStage::compute(int e) {
       exposedCount = 1;
     }
   }
-  uint64_t cast = 0;
   std::array<Rgb, 3> atPoints{};
   for (size_t l = 0; l < scene_.lights.size(); ++l)
     for (int k = 0; k < count; ++k)
@@ -164,14 +198,17 @@ void DirectLightStage::compute(int e) {
                                         streamKey(seed_ ^ 0x6c69676874ull, static_cast<uint64_t>(e),
                                                   l * 3 + static_cast<uint64_t>(k)),
                                         cast);
-  Rgb mean;
+  Rgb pointMean;
   for (int k = 0; k < count; ++k)
-    if (exposed[k]) mean += atPoints[k];
-  mean = mean / exposedCount;
+    if (exposed[k]) pointMean += atPoints[k];
+  pointMean = pointMean / exposedCount;
   for (int k = 0; k < 3; ++k)
-    if (k >= count || !exposed[k]) atPoints[k] = mean;
-  pointIrradiance_[e] = atPoints;
-  irradiance_[e] = mean;
+    if (k >= count || !exposed[k]) atPoints[k] = pointMean;
+  if (keepPoints_) {
+    pointIrradiance_[e] = atPoints;
+    pointMean_[e] = pointMean;
+  }
+  if (used == 0) irradiance_[e] = pointMean;
   elementRays_[e] = cast;
 }
 
@@ -185,7 +222,10 @@ void DirectLightStage::apply(RadiosityProblem& problem) {
   const auto start = std::chrono::steady_clock::now();
   const int n = mesh_.elementCount();
   irradiance_.assign(n, Rgb());
-  pointIrradiance_.assign(n, {});
+  if (keepPoints_) {
+    pointIrradiance_.assign(n, {});
+    pointMean_.assign(n, Rgb());
+  }
   elementRays_.assign(n, 0);
   tbb::parallel_for(0, n, [&](int e) { compute(e); });
   raysCast_ = std::accumulate(elementRays_.begin(), elementRays_.end(), uint64_t{0});
@@ -205,7 +245,10 @@ void DirectLightStage::meshChanged(const std::vector<int>& changed, RadiosityPro
   if (scene_.lights.empty()) return;
   const int n = mesh_.elementCount();
   irradiance_.resize(n);
-  pointIrradiance_.resize(n);
+  if (keepPoints_) {
+    pointIrradiance_.resize(n);
+    pointMean_.resize(n);
+  }
   elementRays_.resize(n, 0);
   tbb::parallel_for(size_t{0}, changed.size(), [&](size_t i) {
     const uint64_t before = elementRays_[changed[i]];
@@ -218,10 +261,10 @@ void DirectLightStage::meshChanged(const std::vector<int>& changed, RadiosityPro
 
 void DirectLightStage::addPointVariation(const RadiosityProblem& problem,
                                          std::vector<std::array<Rgb, 3>>& pointRadiosity) const {
-  if (scene_.lights.empty() || pointRadiosity.size() != irradiance_.size()) return;
+  if (scene_.lights.empty() || !keepPoints_ || pointRadiosity.size() != irradiance_.size()) return;
   for (size_t e = 0; e < pointRadiosity.size(); ++e)
     for (int k = 0; k < 3; ++k)
-      pointRadiosity[e][k] += problem.reflectance[e] * (pointIrradiance_[e][k] - irradiance_[e]);
+      pointRadiosity[e][k] += problem.reflectance[e] * (pointIrradiance_[e][k] - pointMean_[e]);
 }
 
 void DirectLightStage::report(SolveReport& report) const { report.directLightRays = raysCast_; }

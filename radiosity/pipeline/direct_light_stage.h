@@ -17,32 +17,41 @@
 
 namespace rad {
 
-// Rays per receiver point: the sky's cosine-weighted hemisphere (8 × 8 strata) and a sun of
-// non-zero angular diameter (4 × 4 strata over its disc).
-constexpr int kSkyRays = 64;
-constexpr int kSunDiscRays = 16;
+// Rays per point: the sky's (or a map's) hemisphere in skyStrata² strata, a sun of non-zero
+// angular diameter in sunStrata² strata over its disc. The defaults are a receiver point's.
+struct DirectRays {
+  int skyStrata = 8;  // even: a map's rays are skyStrata × skyStrata / 2, twice
+  int sunStrata = 4;
+};
+// An element's mean E_d: kAreaStrata² points stratified over its area, each with kAreaRays
+// (4 × 4 sky rays, 2 × 2 over the sun): 256 sky rays per element in all, as many directions as
+// the three receiver points had, now spread over the whole element.
+constexpr int kAreaStrata = 4;
+constexpr DirectRays kAreaRays{4, 2};
 
 // Direct irradiance (W·m⁻²) from one light at point `x` of a one-sided surface with unit normal
 // `n` (only its front receives), shadow rays through `rays`. Point: I cosθ / r²; spot: the same
 // times 0 outside the outer cone, 1 inside the inner cone, smoothstep in cos between; directional:
-// E cosθ (one ray, or kSunDiscRays stratified over its disc when its angular diameter > 0); sky:
-// π × the mean, over kSkyRays cosine-weighted rays, of the sky's radiance along those that leave
+// E cosθ (one ray, or sunStrata² stratified over its disc when its angular diameter > 0); sky:
+// π × the mean, over skyStrata² cosine-weighted rays, of the sky's radiance along those that leave
 // the scene above the horizon of `up` (πL × their fraction for a uniform sky); environment and CIE
-// clear sky: kSkyRays / 2 rays by the map's luminance and as many cosine-weighted, combined by the
-// balance heuristic. `key` seeds the stratified jitter; `raysCast` counts the rays.
+// clear sky: skyStrata² / 2 rays by the map's luminance and as many cosine-weighted, combined by
+// the balance heuristic. `key` seeds the stratified jitter; `raysCast` counts the rays.
 Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-                     const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast);
+                     const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast,
+                     const DirectRays& count = DirectRays{});
 
 // The first shot of the lights besides emissive polygons (point, spot, directional, sky,
-// environment): the
-// direct irradiance E_d at each element's receiver points (the analytic factors' Gauss points, or
-// the centroid with --receiver-points 1), averaged per element; the reflected part ρ E_d enters the
-// problem as emission, so the solver carries the interreflection on from there. Holds references
-// to the scene, mesh and ray caster, which must outlive it.
+// environment): each element's mean direct irradiance E_d over its exposed area (stratified
+// points, kAreaStrata²); the reflected part ρ E_d enters the problem as emission, so the solver
+// carries the interreflection on from there. Where the solution keeps B at the receiver points
+// (analytic factors' Gauss points), E_d is computed there too, for the displayed variation inside
+// the element. Holds references to the scene, mesh and ray caster, which must
+// outlive it.
 class DirectLightStage {
  public:
-  // With `exposure`, receiver points in a buried part of an element are left out (the element's
-  // E_d is the mean over the others; with none left, E_d at an exposed point of the element).
+  // With `exposure`, points in a buried part of an element are left out (with no receiver point
+  // left, E_d at an exposed point of the element stands for them).
   DirectLightStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
                    const SolveOptions& options, const ElementExposure* exposure = nullptr);
 
@@ -53,8 +62,9 @@ class DirectLightStage {
   void meshChanged(const std::vector<int>& changed, RadiosityProblem& problem);
 
   // The solver saw each element's mean E_d; where the solution keeps B at the receiver points
-  // (pointRadiosity), adds ρ (E_d at the point − the mean), so the displayed solution shows how
-  // the direct light varies inside an element (exact, as B is linear in E).
+  // (pointRadiosity), adds ρ (E_d at the point − the receiver points' mean), so the displayed
+  // solution shows how the direct light varies inside an element and its points still average
+  // to the element's B.
   void addPointVariation(const RadiosityProblem& problem,
                          std::vector<std::array<Rgb, 3>>& pointRadiosity) const;
 
@@ -72,8 +82,12 @@ class DirectLightStage {
   const ElementExposure* exposure_;
   uint64_t seed_;
   int receiverPoints_;
+  // Whether the solution keeps B at the receiver points (analytic factors, 3 points; the
+  // condition keepSolution applies), so E_d is wanted there too.
+  bool keepPoints_;
   std::vector<Rgb> irradiance_;
   std::vector<std::array<Rgb, 3>> pointIrradiance_;  // E_d at each receiver point
+  std::vector<Rgb> pointMean_;                       // their mean over the exposed ones
   std::vector<uint64_t> elementRays_;
   uint64_t raysCast_ = 0;
 };
