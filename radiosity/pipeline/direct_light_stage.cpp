@@ -17,8 +17,10 @@
 namespace rad {
 namespace {
 
-Rgb fromPointLight(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-                   const Eigen::Vector3d& n, uint64_t& raysCast) {
+// I cosθ / r² (a spot's falloff included) at x, as if nothing were in the way; 0 behind the
+// surface or outside the cone.
+Rgb unshadowedPointIrradiance(const Light& light, const Eigen::Vector3d& x,
+                              const Eigen::Vector3d& n) {
   const Eigen::Vector3d toLight = light.position - x;
   const double r2 = toLight.squaredNorm();
   if (!(r2 > 0) || !std::isfinite(r2)) return {};  // on the point, or too far for a double
@@ -28,10 +30,25 @@ Rgb fromPointLight(const Light& light, const RayCaster& rays, const Eigen::Vecto
   const double falloff =
       light.type == LightType::Spot ? spotFalloff(light, light.direction.dot(-toLight) / r) : 1;
   if (falloff <= 0) return {};
-  const Eigen::Vector3d origin = rays.liftOff(x, n, toLight);
-  ++raysCast;
-  if (rays.occluded(origin, light.position - origin, 1.0 - 1e-6)) return {};
   return light.intensity * (falloff * cosTheta / r2);
+}
+
+bool pointLightVisible(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
+                       const Eigen::Vector3d& n, uint64_t& raysCast) {
+  const Eigen::Vector3d origin = rays.liftOff(x, n, light.position - x);
+  ++raysCast;
+  return !rays.occluded(origin, light.position - origin, 1.0 - 1e-6);
+}
+
+Rgb fromPointLight(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
+                   const Eigen::Vector3d& n, uint64_t& raysCast) {
+  const Rgb e = unshadowedPointIrradiance(light, x, n);
+  if (e.isZero() || !pointLightVisible(light, rays, x, n, raysCast)) return {};
+  return e;
+}
+
+bool isPointLike(const Light& light) {
+  return light.type == LightType::Point || light.type == LightType::Spot;
 }
 
 Rgb fromDirectional(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
@@ -127,6 +144,33 @@ Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vec
   return {};
 }
 
+Rgb sampledPointLightIrradiance(const std::vector<const Light*>& lights, const RayCaster& rays,
+                                const Eigen::Vector3d& x, const Eigen::Vector3d& n, double u,
+                                uint64_t& raysCast) {
+  // Every light's unshadowed share is cheap (no ray); one light, picked in proportion to its
+  // share's luminance, gets the shadow ray. Its share over its probability is unbiased for the
+  // sum, and exact wherever all the lights see x alike.
+  thread_local std::vector<Rgb> shares;
+  shares.clear();
+  double total = 0;
+  for (const Light* light : lights) {
+    shares.push_back(unshadowedPointIrradiance(*light, x, n));
+    total += shares.back().luminance();
+  }
+  if (!(total > 0)) return {};
+  double pick = u * total;
+  size_t chosen = 0;
+  for (size_t l = 0; l < lights.size(); ++l) {
+    const double weight = shares[l].luminance();
+    if (weight <= 0) continue;
+    chosen = l;  // the last one with a share, should rounding leave `pick` just above 0
+    pick -= weight;
+    if (pick < 0) break;
+  }
+  if (!pointLightVisible(*lights[chosen], rays, x, n, raysCast)) return {};
+  return shares[chosen] * (total / shares[chosen].luminance());
+}
+
 DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
                                    const SolveOptions& options, const ElementExposure* exposure)
     : scene_(scene),
@@ -136,7 +180,11 @@ DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, co
       seed_(options.seed),
       receiverPoints_(options.receiverPoints),
       keepPoints_(options.formFactors == FormFactorMethod::Analytic &&
-                  options.receiverPoints == 3) {}
+                  options.receiverPoints == 3) {
+  for (const Light& light : scene.lights)
+    if (isPointLike(light)) pointLights_.push_back(&light);
+  samplePointLights_ = pointLights_.size() > kEveryPointLight;
+}
 
 void DirectLightStage::compute(int e) {
   const Eigen::Vector3d n = mesh_.normal(e);
@@ -157,11 +205,15 @@ void DirectLightStage::compute(int e) {
     if (partlyBuried && exposure_->buried(e, s, t)) continue;
     const double r = std::sqrt(s);
     const Eigen::Vector3d x = (1 - r) * corners[0] + r * (1 - t) * corners[1] + r * t * corners[2];
-    for (size_t l = 0; l < scene_.lights.size(); ++l)
+    for (size_t l = 0; l < scene_.lights.size(); ++l) {
+      if (samplePointLights_ && isPointLike(scene_.lights[l])) continue;
       areaSum += directIrradiance(
           scene_.lights[l], rays_, x, n,
           streamKey(seed_ ^ 0x617265616d65616eull, static_cast<uint64_t>(e), 1 + l * 64 + j), cast,
           kAreaRays);
+    }
+    if (samplePointLights_)
+      areaSum += sampledPointLightIrradiance(pointLights_, rays_, x, n, jitter.uniform(), cast);
     ++used;
   }
   irradiance_[e] = areaSum / std::max(used, 1);

@@ -28,6 +28,15 @@ struct DirectRays {
 // the three receiver points had, now spread over the whole element.
 constexpr int kAreaStrata = 4;
 constexpr DirectRays kAreaRays{4, 2};
+// Up to this many point and spot lights, every one gets a shadow ray from each area point; with
+// more, each point casts one, to a light picked in proportion to its unshadowed irradiance there
+// (sampledPointLightIrradiance), so a scene with hundreds of lamps costs no more per element.
+constexpr size_t kEveryPointLight = 4;
+
+// The sum of the point and spot lights' E_d at x by that one shadow ray; `u` in [0, 1) picks it.
+Rgb sampledPointLightIrradiance(const std::vector<const Light*>& lights, const RayCaster& rays,
+                                const Eigen::Vector3d& x, const Eigen::Vector3d& n, double u,
+                                uint64_t& raysCast);
 
 // Direct irradiance (W·m⁻²) from one light at point `x` of a one-sided surface with unit normal
 // `n` (only its front receives), shadow rays through `rays`. Point: I cosθ / r²; spot: the same
@@ -85,6 +94,8 @@ class DirectLightStage {
   // Whether the solution keeps B at the receiver points (analytic factors, 3 points; the
   // condition keepSolution applies), so E_d is wanted there too.
   bool keepPoints_;
+  std::vector<const Light*> pointLights_;  // the scene's point and spot lights
+  bool samplePointLights_;                 // more of them than kEveryPointLight
   std::vector<Rgb> irradiance_;
   std::vector<std::array<Rgb, 3>> pointIrradiance_;  // E_d at each receiver point
   std::vector<Rgb> pointMean_;                       // their mean over the exposed ones

@@ -505,6 +505,61 @@ TEST(DirectLight, LightAlongAnEdgeOfTheElementCountsByTheAreaItLights) {
   }
 }
 
+// With more point lights than kEveryPointLight, each area point casts one shadow ray, to a light
+// picked by its unshadowed share. Eight lights: four above a roof that hides them from the whole
+// floor, four under it. Over 64 seeds each floor element's B averages to ρ × the area mean of the
+// four visible lights' irradiance within 4 standard errors, with 16 shadow rays per element.
+TEST(DirectLight, ManyPointLightsShareOneShadowRayPerPointAndStayUnbiased) {
+  std::vector<Light> lights, visible;
+  for (int k = 0; k < 8; ++k) {
+    const double a = k * 0.785398;
+    const bool above = k % 2 == 0;
+    lights.push_back(pointLight({0.6 * std::cos(a), above ? 1.0 : 0.5, 0.6 * std::sin(a)},
+                                {1.0 + k, 2.0, 3.0 - 0.3 * k}));
+    if (!above) visible.push_back(lights.back());
+  }
+  ASSERT_GT(lights.size(), kEveryPointLight);
+  Scene scene = floorScene(lights);
+  addQuad(scene, {{-1, 0.8, -1}, {-1, 0.8, 1}, {1, 0.8, 1}, {1, 0.8, -1}});  // the roof, facing up
+  SolveOptions options = quickOptions();
+  options.targetElements = 0;
+  options.elementSize = 0.6;
+  constexpr int kSeeds = 64;
+  std::vector<Rgb> sum, sumSquares;
+  std::vector<int> floorElements;
+  for (int seed = 1; seed <= kSeeds; ++seed) {
+    options.seed = seed;
+    const SolveResult result = solveScene(scene, options);
+    const Solution& s = result.solution;
+    if (floorElements.empty()) {
+      for (int e = 0; e < s.mesh->elementCount(); ++e)
+        if (s.mesh->centroid(e).y() < 0.4) floorElements.push_back(e);
+      sum.assign(floorElements.size(), Rgb()), sumSquares.assign(floorElements.size(), Rgb());
+      ASSERT_GT(floorElements.size(), 10u);
+    }
+    EXPECT_EQ(result.report.directLightRays,
+              static_cast<uint64_t>(kAreaStrata * kAreaStrata) * s.mesh->elementCount());
+    for (size_t i = 0; i < floorElements.size(); ++i) {
+      const Rgb b = s.radiosity[floorElements[i]];
+      sum[i] += b, sumSquares[i] += b * b;
+    }
+  }
+  const SolveResult first = solveScene(scene, options);
+  for (size_t i = 0; i < floorElements.size(); ++i) {
+    const int e = floorElements[i];
+    Rgb want;
+    for (const Light& light : visible)
+      want += kRho *
+              areaMean(light, first.solution.mesh->corners(e), first.solution.mesh->normal(e)).mean;
+    for (int c = 0; c < 3; ++c) {
+      const double mean = sum[i][c] / kSeeds;
+      const double variance = std::max(0.0, sumSquares[i][c] / kSeeds - mean * mean);
+      EXPECT_NEAR(mean, want[c], 4 * std::sqrt(variance / (kSeeds - 1)) + 1e-3 * want[c])
+          << "element " << e << " channel " << c;
+    }
+  }
+}
+
 TEST(DirectLight, ASceneWithLightsAndNoEmissivePolygonIsAccepted) {
   Scene scene = floorScene({});
   EXPECT_THROW(requireEmitter(scene), InputError);
