@@ -6,7 +6,14 @@
 
 namespace rad {
 
-VertexInterpolation::VertexInterpolation(const PatchMesh& patchMesh, double creaseAngleDegrees) {
+VertexInterpolation::VertexInterpolation(const PatchMesh& patchMesh, double creaseAngleDegrees)
+    : VertexInterpolation(patchMesh, {}, creaseAngleDegrees) {}
+
+VertexInterpolation::VertexInterpolation(const PatchMesh& patchMesh,
+                                         const std::vector<double>& elementWeights,
+                                         double creaseAngleDegrees) {
+  RAD_CHECK(elementWeights.empty() ||
+            elementWeights.size() == static_cast<size_t>(patchMesh.elementCount()));
   const TriMesh& mesh = patchMesh.mesh();
   const double cosCrease = std::cos(creaseAngleDegrees * M_PI / 180.0);
   const int elementCount = patchMesh.elementCount();
@@ -46,9 +53,11 @@ VertexInterpolation::VertexInterpolation(const PatchMesh& patchMesh, double crea
   normals_.resize(positions_.size());
   for (size_t v = 0; v < members.size(); ++v) {
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    double given = 0;
+    for (int e : members[v]) given += elementWeights.empty() ? 0 : elementWeights[e];
     for (int e : members[v]) {
       elements_.push_back(e);
-      weights_.push_back(patchMesh.area(e));
+      weights_.push_back(given > 0 ? elementWeights[e] : patchMesh.area(e));
       n += patchMesh.area(e) * elementNormals[e];
     }
     normals_[v] = n.normalized();

@@ -15,6 +15,11 @@ namespace rad {
 class VertexInterpolation {
  public:
   explicit VertexInterpolation(const PatchMesh& mesh, double creaseAngleDegrees = 30.0);
+  // Weighted by `elementWeights` (one per element) instead of the areas: the exposed areas, so an
+  // element buried under a box (B of a part no light reaches) does not darken its neighbours'
+  // vertices. A vertex whose elements all weigh 0 takes their area-weighted mean.
+  VertexInterpolation(const PatchMesh& mesh, const std::vector<double>& elementWeights,
+                      double creaseAngleDegrees = 30.0);
 
   int vertexCount() const { return static_cast<int>(positions_.size()); }
   const Eigen::Vector3d& position(int vertex) const { return positions_[vertex]; }

@@ -152,7 +152,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   const PatchMesh& mesh = *solution.mesh;
   const auto start = std::chrono::steady_clock::now();
 
-  const VertexInterpolation interpolation(mesh);
+  const VertexInterpolation interpolation(mesh, solution.problem.area);  // exposed areas
   const std::vector<Rgb> vertexRadiance =
       interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
   const ToneMap toneMap = o.exposure ? ToneMap{*o.exposure} : solutionToneMap(solution);

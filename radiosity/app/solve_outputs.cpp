@@ -136,7 +136,7 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   AtomicFile csv((dir / "elements.csv").string());
   writeElementsCsv(csv.stream(), mesh, solution.radiosity);
 
-  const VertexInterpolation interpolation(mesh);
+  const VertexInterpolation interpolation(mesh, solution.problem.area);  // exposed areas
   const std::vector<Rgb> vertexRadiance =
       interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
   const ToneMap toneMap = solutionToneMap(solution);

@@ -66,4 +66,10 @@ std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem) {
   return multiplier;
 }
 
+ElementExposure solveExposure(const SolveOptions& options, const PatchMesh& mesh,
+                              const RayCaster& rays) {
+  return options.formFactors == FormFactorMethod::Hemisphere ? ElementExposure(mesh, rays)
+                                                             : ElementExposure();
+}
+
 }  // namespace rad

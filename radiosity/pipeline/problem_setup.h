@@ -4,9 +4,11 @@
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/formfactors/specular_paths.h"
+#include "radiosity/pipeline/solve_options.h"
 #include "radiosity/scene/scene.h"
 #include "radiosity/solvers/radiosity_problem.h"
 #include "radiosity/visibility/element_exposure.h"
+#include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
 
@@ -15,6 +17,12 @@ namespace rad {
 // A = the element's area, or with `exposure` its exposed area (element_exposure.h).
 RadiosityProblem makeProblem(const Scene& scene, const PatchMesh& mesh,
                              const ElementExposure* exposure = nullptr);
+
+// The buried parts of elements a solve with `options` takes into account: found by probe rays
+// with hemisphere rows; none with analytic factors (they sample their receivers at fixed points
+// and are refined instead). A saved solution, when reused, gets the same.
+ElementExposure solveExposure(const SolveOptions& options, const PatchMesh& mesh,
+                              const RayCaster& rays);
 
 // Mirror and glass behaviour per element for extended form factors.
 std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMesh& mesh);

@@ -197,7 +197,10 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
                      "the saved solution has " + std::to_string(element) +
                          " elements, the re-meshed scene " + std::to_string(count));
   result.solution.scene = scene;
-  result.solution.problem = makeProblem(scene, mesh);
+  // The exposed areas the solve had: the outputs weigh vertex values by them.
+  const RayCaster rays(mesh, result.solution.scene);
+  const ElementExposure exposure = solveExposure(options, mesh, rays);
+  result.solution.problem = makeProblem(scene, mesh, &exposure);
   result.report.solverName = meta.value("solver", std::string("saved")) + " (reused)";
   result.report.converged = meta.value("converged", false);
   result.report.maxArea = meshed.maxArea;

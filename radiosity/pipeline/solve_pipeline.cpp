@@ -139,11 +139,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   t = Clock::now();
   const RayCaster rays(*solution.mesh, solution.scene);
   report.times.bvh = since(t);
-  // The buried parts of elements, with hemisphere rows (analytic factors sample their receivers
-  // at fixed points and are refined instead).
-  const ElementExposure exposure = options.formFactors == FormFactorMethod::Hemisphere
-                                       ? ElementExposure(*solution.mesh, rays)
-                                       : ElementExposure();
+  const ElementExposure exposure = solveExposure(options, *solution.mesh, rays);
   noteBuriedParts(exposure, *solution.mesh, report);
   solution.problem = makeProblem(solution.scene, *solution.mesh, &exposure);
   DirectLightStage directLight(solution.scene, *solution.mesh, rays, options, &exposure);

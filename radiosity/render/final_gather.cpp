@@ -13,10 +13,23 @@
 #include "radiosity/visibility/element_exposure.h"
 
 namespace rad {
+namespace {
+
+std::vector<double> exposedAreas(const PatchMesh& mesh, const ElementExposure& exposure) {
+  std::vector<double> areas(mesh.elementCount());
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    areas[e] = mesh.area(e) * exposure.exposedFraction(e);
+  return areas;
+}
+
+}  // namespace
 
 FinalGather::FinalGather(const RenderScene& scene, const std::vector<Rgb>& radiosity,
                          FinalGatherOptions options)
-    : scene_(scene), options_(options), interpolation_(scene.mesh()) {
+    : scene_(scene),
+      options_(options),
+      exposure_(scene.mesh(), scene.caster()),
+      interpolation_(scene.mesh(), exposedAreas(scene.mesh(), exposure_)) {
   const int n = scene.mesh().elementCount();
   radiance_.resize(n);
   reflected_.resize(n);
@@ -64,7 +77,6 @@ FinalGather::ElementLight FinalGather::meanLightSample() const {
   const int n = mesh.elementCount();
   ElementLight light{std::vector<Rgb>(n), std::vector<char>(n, 1)};
   if (scene_.emitters().empty()) return light;
-  const ElementExposure exposure(mesh, scene_.caster());
   tbb::parallel_for(tbb::blocked_range<int>(0, n), [&](const tbb::blocked_range<int>& range) {
     RayCounts unused;
     for (int e = range.begin(); e < range.end(); ++e) {
@@ -82,7 +94,7 @@ FinalGather::ElementLight FinalGather::meanLightSample() const {
         const Point2 p = SobolSampler::point(k, streamKey(0x4d45414e, e, 1));
         // The solution's B is over the element's exposed part (element_exposure.h): so is the
         // mean of its direct light.
-        if (exposure.buried(e, p.x, p.y)) continue;
+        if (exposure_.buried(e, p.x, p.y)) continue;
         ++exposed;
         const double r = std::sqrt(p.x);
         hit.position = (1 - r) * c[0] + r * (1 - p.y) * c[1] + r * p.y * c[2];

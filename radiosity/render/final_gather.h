@@ -4,6 +4,7 @@
 
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/render/integrator.h"
+#include "radiosity/visibility/element_exposure.h"
 
 namespace rad {
 
@@ -90,6 +91,9 @@ class FinalGather : public Integrator {
   // mean shadow-ray share instead of casting its own shadow ray.
   std::vector<char> uniformLight_;
   std::vector<double> elementSize_;  // √area per element: a gather ray landing closer continues
+  // The buried parts of the elements (element_exposure.h): the mean light of an element is over
+  // its exposed points, and vertex values weigh elements by their exposed areas.
+  ElementExposure exposure_;
   VertexInterpolation interpolation_;
   std::vector<Eigen::Vector3d> vertexRadiance_;  // B/π per output vertex (gather 0)
 };
