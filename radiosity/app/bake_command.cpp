@@ -115,6 +115,11 @@ std::string lightmapFileName(int page, int pages, const std::string& extension) 
 void runBake(const CLI::App& command, BakeOptions& o) {
   finishSolveOptions(command, o.solve, o.solverName);
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
+  if (o.solve.lightGroups && o.gather > 0)
+    throw InputError(
+        "--gather with --light-groups: the per-texel gather samples every light at once, so it "
+        "cannot split its direct light into the groups; bake the layers without --gather (or "
+        "refine the mesh with --element-size for sharper shadows)");
   if (o.dilation < 0) o.dilation = o.padding;
   if (o.dilation > o.padding)
     throw InputError("--dilation " + std::to_string(o.dilation) + " exceeds --padding " +
@@ -155,6 +160,10 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   const VertexInterpolation interpolation(mesh, solution.problem.area);  // exposed areas
   const std::vector<Rgb> vertexRadiance =
       interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
+  std::vector<std::vector<Rgb>> layerVertexRadiance;  // per light group (--light-groups)
+  for (const LightLayer& layer : solution.layers)
+    layerVertexRadiance.push_back(
+        interpolateVertexRadiance(interpolation, layer.radiosity, layer.pointRadiosity));
   const ToneMap toneMap = o.exposure ? ToneMap{*o.exposure} : solutionToneMap(solution);
   std::vector<std::string> materialNames;
   for (const Material& m : solution.scene.materials) materialNames.push_back(m.name);
@@ -165,7 +174,8 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                             {"tone_map_exposure", toneMap.exposure},
                             {"solve_seconds", result.report.times.total},
                             {"reused_saved_solution", result.report.reusedSavedSolution}};
-  std::vector<Lightmap> lightmaps;  // one per page
+  std::vector<Lightmap> lightmaps;                    // one per page
+  std::vector<std::vector<Lightmap>> layerLightmaps;  // per light group, one per page
   BakedLook look;
   if (!o.noLightmap) {
     auto t = std::chrono::steady_clock::now();
@@ -185,56 +195,76 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     std::unique_ptr<const RayCaster> caster;
     std::unique_ptr<const RenderScene> view;
     std::unique_ptr<const FinalGather> gather;
-    // H/π at the vertices: the light arriving, smooth across elements of different reflectance.
-    std::vector<Rgb> vertexIncident;
     const bool textured = irradiance || !solution.scene.textures.empty();
     if (o.gather > 0) {
       caster = std::make_unique<const RayCaster>(mesh, solution.scene);
       view = std::make_unique<const RenderScene>(solution.scene, mesh, *caster);
       gather = std::make_unique<const FinalGather>(*view, solution.radiosity,
                                                    FinalGatherOptions{o.gather, 16});
-    } else if (textured) {
-      std::vector<Rgb> incident(mesh.elementCount());
-      for (int e = 0; e < mesh.elementCount(); ++e)
-        incident[e] = incidentLight(solution.radiosity[e], M_PI * elementLe[e], elementRho[e]);
-      vertexIncident = interpolateVertexRadiance(interpolation, incident);
     }
-    for (int page = 0; page < layout.pages; ++page) {
-      if (gather) {
-        // Per-texel final gather: direct light by shadow rays to the emitters and gathered light
-        // from the solution at every texel, for shadows sharper than the elements.
-        const uint64_t seed = o.solve.seed;
-        lightmaps.push_back(bakeLightmap(
-            mesh, layout, interpolation, vertexRadiance, o.dilation,
-            [&](int e, const Eigen::Vector3d& b, size_t texel) {
-              Rng rng(streamKey(seed, 0x6c6d6170ull + page, texel));  // per texel and page
-              RayCounts counts;
-              const Rgb out = gather->outgoingRadiance(e, b, rng, counts);
-              // Gathered at the texel with its own ρ: divide that one out.
-              const Rgb& le = solution.scene.materials[mesh.material(e)].emission;
-              return irradiance ? incidentLight(out, le, texelRho(e, b)) : out;
-            },
-            page));
-      } else if (textured) {
-        // The interpolated solution, with the texture's detail inside each element (or without
-        // the albedo at all).
-        lightmaps.push_back(bakeLightmap(
-            mesh, layout, interpolation, vertexRadiance, o.dilation,
-            [&](int e, const Eigen::Vector3d& b, size_t) {
-              const auto& v = interpolation.triangle(e);
-              auto at = [&](const std::vector<Rgb>& perVertex) {
-                return perVertex[v[0]] * b[0] + perVertex[v[1]] * b[1] + perVertex[v[2]] * b[2];
-              };
-              if (irradiance) return at(vertexIncident);
-              if (!hasReflectanceTexture(solution.scene, mesh, e)) return at(vertexRadiance);
-              return elementLe[e] + texelRho(e, b) * at(vertexIncident);
-            },
-            page));
-      } else {
-        lightmaps.push_back(
-            bakeLightmap(mesh, layout, interpolation, vertexRadiance, o.dilation, {}, page));
+    // The pages of one solution (the whole, or one light group's layer with its own emitters'
+    // Le): every step is linear in B and Le, so the layers' pages add up to the whole's.
+    auto bakePages = [&](const std::vector<Rgb>& radiosity, const std::vector<Rgb>& vertexValues,
+                         const std::vector<Rgb>& le) {
+      // H/π at the vertices: the light arriving, smooth across elements of different reflectance.
+      std::vector<Rgb> vertexIncident;
+      if (!gather && textured) {
+        std::vector<Rgb> incident(mesh.elementCount());
+        for (int e = 0; e < mesh.elementCount(); ++e)
+          incident[e] = incidentLight(radiosity[e], M_PI * le[e], elementRho[e]);
+        vertexIncident = interpolateVertexRadiance(interpolation, incident);
       }
-      look.lightmapPages.push_back(encodePng(lightmaps.back().radiance, toneMap));
+      std::vector<Lightmap> pages;
+      for (int page = 0; page < layout.pages; ++page) {
+        if (gather) {
+          // Per-texel final gather: direct light by shadow rays to the emitters and gathered
+          // light from the solution at every texel, for shadows sharper than the elements.
+          const uint64_t seed = o.solve.seed;
+          pages.push_back(bakeLightmap(
+              mesh, layout, interpolation, vertexValues, o.dilation,
+              [&](int e, const Eigen::Vector3d& b, size_t texel) {
+                Rng rng(streamKey(seed, 0x6c6d6170ull + page, texel));  // per texel and page
+                RayCounts counts;
+                const Rgb out = gather->outgoingRadiance(e, b, rng, counts);
+                // Gathered at the texel with its own ρ: divide that one out.
+                const Rgb& texelLe = solution.scene.materials[mesh.material(e)].emission;
+                return irradiance ? incidentLight(out, texelLe, texelRho(e, b)) : out;
+              },
+              page));
+        } else if (textured) {
+          // The interpolated solution, with the texture's detail inside each element (or
+          // without the albedo at all).
+          pages.push_back(bakeLightmap(
+              mesh, layout, interpolation, vertexValues, o.dilation,
+              [&](int e, const Eigen::Vector3d& b, size_t) {
+                const auto& v = interpolation.triangle(e);
+                auto at = [&](const std::vector<Rgb>& perVertex) {
+                  return perVertex[v[0]] * b[0] + perVertex[v[1]] * b[1] + perVertex[v[2]] * b[2];
+                };
+                if (irradiance) return at(vertexIncident);
+                if (!hasReflectanceTexture(solution.scene, mesh, e)) return at(vertexValues);
+                return le[e] + texelRho(e, b) * at(vertexIncident);
+              },
+              page));
+        } else {
+          pages.push_back(
+              bakeLightmap(mesh, layout, interpolation, vertexValues, o.dilation, {}, page));
+        }
+      }
+      return pages;
+    };
+    lightmaps = bakePages(solution.radiosity, vertexRadiance, elementLe);
+    for (const Lightmap& page : lightmaps)
+      look.lightmapPages.push_back(encodePng(page.radiance, toneMap));
+    for (size_t g = 0; g < solution.layers.size(); ++g) {
+      const LightGroup& group = solution.layers[g].group;
+      std::vector<char> member(solution.scene.materials.size(), 0);
+      for (int m : group.materials) member[m] = 1;
+      std::vector<Rgb> groupLe(mesh.elementCount());
+      for (int e = 0; e < mesh.elementCount(); ++e)
+        if (member[mesh.material(e)]) groupLe[e] = elementLe[e];
+      layerLightmaps.push_back(
+          bakePages(solution.layers[g].radiosity, layerVertexRadiance[g], groupLe));
     }
     size_t crowded = 0;
     auto count = [&](TexelState state) {
@@ -287,6 +317,38 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     summary["base_colour_images"] = look.images.size();
   }
 
+  // Light groups: each layer's vertex values and lightmap pages, named by the group's file name.
+  nlohmann::json groupsJson = nlohmann::json::array();
+  for (size_t g = 0; g < solution.layers.size(); ++g) {
+    const LightGroup& group = solution.layers[g].group;
+    BakedLayer layer;
+    layer.name = group.name;
+    for (int v : baked.sourceVertex) layer.radiance.push_back(layerVertexRadiance[g][v]);
+    const std::string prefix = "group_" + group.fileName + "_";
+    nlohmann::json files = {prefix + "vertex_colors.ply"};
+    if (!o.noLightmap)
+      for (int page = 0; page < layout.pages; ++page) {
+        layer.lightmapPages.push_back(encodePng(layerLightmaps[g][page].radiance, toneMap));
+        layer.exrFiles.push_back(prefix + lightmapFileName(page, layout.pages, "exr"));
+        files.push_back(layer.exrFiles.back());
+        files.push_back(prefix + lightmapFileName(page, layout.pages, "png"));
+      }
+    nlohmann::json materials = nlohmann::json::array(), lights = nlohmann::json::array();
+    for (int m : group.materials) materials.push_back(solution.scene.materials[m].name);
+    for (size_t l : group.lights) lights.push_back(l);
+    groupsJson.push_back({{"name", group.name},
+                          {"emissive_materials", materials},
+                          {"lights", lights},
+                          {"glb_attribute", "_LIGHT_GROUP_" + std::to_string(g)},
+                          {"files", files}});
+    look.layers.push_back(std::move(layer));
+  }
+  if (!solution.layers.empty()) {
+    summary["light_groups"] = groupsJson;
+    logInfo("light groups: " + std::to_string(solution.layers.size()) +
+            " layers (group_NAME_* files; they sum to the whole)");
+  }
+
   // Everything goes under temporary names; only when all are complete do they take their names.
   throwIfInterrupted();
   OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
@@ -307,6 +369,17 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     open(pngNames.back(), true)
         .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
   }
+  for (size_t g = 0; g < solution.layers.size(); ++g) {
+    const std::string prefix = "group_" + solution.layers[g].group.fileName + "_";
+    writeVertexColorsPly(open(prefix + "vertex_colors.ply", true), interpolation, mesh,
+                         layerVertexRadiance[g], toneMap);
+    for (size_t page = 0; page < look.layers[g].lightmapPages.size(); ++page) {
+      const std::vector<std::uint8_t>& png = look.layers[g].lightmapPages[page];
+      open(prefix + lightmapFileName(static_cast<int>(page), layout.pages, "png"), true)
+          .write(reinterpret_cast<const char*>(png.data()),
+                 static_cast<std::streamsize>(png.size()));
+    }
+  }
   if (!o.noLightmap) {
     std::ostream& obj = open("scene_baked.obj", false);
     writeBakedObj(obj, open("scene_baked.mtl", false), baked, "scene_baked.mtl", pngNames);
@@ -318,6 +391,9 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   for (int page = 0; page < static_cast<int>(lightmaps.size()); ++page)
     writeExr((dir / lightmapFileName(page, layout.pages, "exr")).string(),
              lightmaps[page].radiance);
+  for (size_t g = 0; g < layerLightmaps.size(); ++g)
+    for (int page = 0; page < static_cast<int>(layerLightmaps[g].size()); ++page)
+      writeExr((dir / look.layers[g].exrFiles[page]).string(), layerLightmaps[g][page].radiance);
   for (auto& f : files) f->commit();
   logInfo("baked " + o.solve.scenePath + " into " + o.solve.outputDir + " in " +
           std::to_string(since(start)) + " s after the solve");
@@ -385,6 +461,11 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
                                                  {"irradiance", LightmapContent::Irradiance}},
           CLI::ignore_case))
       ->default_str("radiance");
+  bake->add_flag("--light-groups", o->solve.lightGroups,
+                 "One layer per light group (each emissive material; each light, or the lights "
+                 "file's \"group\"; --sky, --sun): group_NAME_lightmap.exr/.png and "
+                 "group_NAME_vertex_colors.ply beside the whole, and _LIGHT_GROUP_i in the glb, "
+                 "so an engine can dim or recolour each group without a re-bake");
   bake->add_option("--solution", o->solutionDir,
                    "Reuse the solution `radiosity solve` wrote into this directory (same scene and "
                    "solve options) instead of solving");

@@ -122,6 +122,14 @@ void writeBakedGlb(std::ostream& out, const BakedMesh& mesh, const BakedLook& lo
                                         {"NORMAL", b.addVec(normals, 3, false)},
                                         {"_RADIANCE", b.addVec(radiance, 3, false)}};
   if (vertexColours) attributes["COLOR_0"] = b.addVec(colours, 3, false);
+  for (size_t i = 0; i < look.layers.size(); ++i) {
+    const BakedLayer& layer = look.layers[i];
+    RAD_CHECK_EQ(layer.radiance.size(), mesh.positions.size());
+    std::vector<float> values;
+    for (const Rgb& l : layer.radiance)
+      for (int k = 0; k < 3; ++k) values.push_back(static_cast<float>(l[k]));
+    attributes["_LIGHT_GROUP_" + std::to_string(i)] = b.addVec(values, 3, false);
+  }
   if (lightmap) attributes["TEXCOORD_0"] = attributes["TEXCOORD_1"] = b.addVec(uvs, 2, false);
   if (textureUvs) attributes["TEXCOORD_0"] = b.addVec(texUvs, 2, false);
 
@@ -162,6 +170,31 @@ void writeBakedGlb(std::ostream& out, const BakedMesh& mesh, const BakedLook& lo
     }
   } else {
     model.extensionsUsed.push_back("KHR_materials_unlit");
+  }
+  if (!look.layers.empty()) {
+    tinygltf::Value::Array groups;
+    for (size_t i = 0; i < look.layers.size(); ++i) {
+      const BakedLayer& layer = look.layers[i];
+      tinygltf::Value::Object group;
+      group["name"] = tinygltf::Value(layer.name);
+      group["attribute"] = tinygltf::Value("_LIGHT_GROUP_" + std::to_string(i));
+      tinygltf::Value::Array textures, exrs;
+      for (size_t p = 0; p < layer.lightmapPages.size(); ++p)
+        textures.emplace_back(addTexture(
+            "lightmap_" + layer.name +
+                (layer.lightmapPages.size() == 1 ? std::string() : "_" + std::to_string(p)),
+            "image/png", layer.lightmapPages[p], 0));
+      for (const std::string& file : layer.exrFiles) exrs.emplace_back(file);
+      group["lightmap_textures"] = tinygltf::Value(textures);
+      group["lightmap_exr"] = tinygltf::Value(exrs);
+      groups.emplace_back(group);
+    }
+    info["light_groups"] = tinygltf::Value(groups);
+    info["light_groups_rule"] = tinygltf::Value(std::string(
+        "the layers are linear: sum(weight_i * layer_i) relights the scene with group i scaled by "
+        "weight_i; weights of 1 give _RADIANCE and the lightmap"));
+    extras["radiosity"] = tinygltf::Value(info);
+    model.asset.extras = tinygltf::Value(extras);
   }
 
   tinygltf::Mesh gltfMesh;

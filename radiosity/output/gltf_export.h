@@ -25,11 +25,20 @@ struct BaseColour {
   int image = -1;
 };
 
+// One light group's layer in the baked glTF (bake --light-groups).
+struct BakedLayer {
+  std::string name;                                      // the group's name
+  std::vector<Rgb> radiance;                             // per BakedMesh vertex, linear
+  std::vector<std::vector<std::uint8_t>> lightmapPages;  // PNG per page, the whole's exposure
+  std::vector<std::string> exrFiles;                     // its linear lightmap pages beside the glb
+};
+
 // What the baked glTF shows besides its geometry and vertex colours.
 struct BakedLook {
   std::vector<std::vector<std::uint8_t>> lightmapPages;  // one PNG per page; none: colours only
   std::vector<BaseColour> baseColours;  // per material of the BakedMesh; empty: black base
   std::vector<EncodedImage> images;     // the base-colour images BaseColour::image indexes
+  std::vector<BakedLayer> layers;       // light groups; empty without --light-groups
 };
 
 // Writes the baked scene as binary glTF 2.0 (.glb): positions, normals, one primitive per scene
@@ -45,7 +54,11 @@ struct BakedLook {
 // The base is the scene's base colour (look.baseColours, its texture on TEXCOORD_0) when given —
 // viewer lights then add to the baked light, as they would on the real surface — else black.
 // Without a lightmap the materials are KHR_materials_unlit with a white base, so COLOR_0 is what
-// shows. The exposure is in asset.extras.radiosity. Open `out` in binary mode.
+// shows. The exposure is in asset.extras.radiosity. With light groups (look.layers), each layer i
+// adds the vertex attribute _LIGHT_GROUP_i (its linear radiance; the layers sum to _RADIANCE) and
+// its lightmap pages as textures that no material uses; asset.extras.radiosity.light_groups lists
+// each layer's name, attribute, texture indices and EXR files, so an engine can mix the layers at
+// run time with weights of its own. Open `out` in binary mode.
 // Throws RuntimeFailure if tinygltf fails to serialise.
 void writeBakedGlb(std::ostream& out, const BakedMesh& mesh, const BakedLook& look,
                    const ToneMap& toneMap, LightmapContent content = LightmapContent::Radiance);

@@ -39,6 +39,7 @@ BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interp
         out.positions.push_back(interpolation.position(v));
         out.normals.push_back(interpolation.normal(v));
         out.radiance.push_back(vertexRadiance[v]);
+        out.sourceVertex.push_back(v);
         if (layout) out.uvs.push_back(uv);
         if (anyTextureUvs) out.textureUvs.push_back(textureUv);
       }

@@ -22,7 +22,8 @@ struct BakedMesh {
   // The scene's texture UVs (what its base-colour textures are mapped with), origin top-left as
   // glTF's; empty when the scene has none.
   std::vector<Eigen::Vector2d> textureUvs;
-  std::vector<Rgb> radiance;  // linear outgoing radiance per vertex, W·m⁻²·sr⁻¹
+  std::vector<Rgb> radiance;      // linear outgoing radiance per vertex, W·m⁻²·sr⁻¹
+  std::vector<int> sourceVertex;  // per vertex, the VertexInterpolation vertex it was made from
   std::vector<std::array<int, 3>> triangles;  // per element, counter-clockwise from the front
   std::vector<int> materials;                 // per triangle
   std::vector<int> pages;                     // per triangle, its lightmap page (0 without)

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/rng.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
@@ -172,7 +173,8 @@ Rgb sampledPointLightIrradiance(const std::vector<const Light*>& lights, const R
 }
 
 DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
-                                   const SolveOptions& options, const ElementExposure* exposure)
+                                   const SolveOptions& options, const ElementExposure* exposure,
+                                   const std::vector<size_t>* lights)
     : scene_(scene),
       mesh_(mesh),
       rays_(rays),
@@ -181,8 +183,15 @@ DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, co
       receiverPoints_(options.receiverPoints),
       keepPoints_(options.formFactors == FormFactorMethod::Analytic &&
                   options.receiverPoints == 3) {
-  for (const Light& light : scene.lights)
-    if (isPointLike(light)) pointLights_.push_back(&light);
+  if (lights) {
+    lights_ = *lights;
+  } else {
+    for (size_t l = 0; l < scene.lights.size(); ++l) lights_.push_back(l);
+  }
+  for (size_t l : lights_) {
+    RAD_CHECK_LT(l, scene.lights.size());
+    if (isPointLike(scene.lights[l])) pointLights_.push_back(&scene.lights[l]);
+  }
   samplePointLights_ = pointLights_.size() > kEveryPointLight;
 }
 
@@ -205,7 +214,7 @@ void DirectLightStage::compute(int e) {
     if (partlyBuried && exposure_->buried(e, s, t)) continue;
     const double r = std::sqrt(s);
     const Eigen::Vector3d x = (1 - r) * corners[0] + r * (1 - t) * corners[1] + r * t * corners[2];
-    for (size_t l = 0; l < scene_.lights.size(); ++l) {
+    for (size_t l : lights_) {
       if (samplePointLights_ && isPointLike(scene_.lights[l])) continue;
       areaSum += directIrradiance(
           scene_.lights[l], rays_, x, n,
@@ -243,7 +252,7 @@ void DirectLightStage::compute(int e) {
     }
   }
   std::array<Rgb, 3> atPoints{};
-  for (size_t l = 0; l < scene_.lights.size(); ++l)
+  for (size_t l : lights_)
     for (int k = 0; k < count; ++k)
       if (exposed[k])
         atPoints[k] += directIrradiance(scene_.lights[l], rays_, points[k], n,
@@ -270,7 +279,7 @@ void DirectLightStage::addEmission(RadiosityProblem& problem) const {
 }
 
 void DirectLightStage::apply(RadiosityProblem& problem) {
-  if (scene_.lights.empty()) return;
+  if (lights_.empty()) return;
   const auto start = std::chrono::steady_clock::now();
   const int n = mesh_.elementCount();
   irradiance_.assign(n, Rgb());
@@ -288,13 +297,13 @@ void DirectLightStage::apply(RadiosityProblem& problem) {
         "their cones): they add no light");
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  logInfo("direct light: " + std::to_string(scene_.lights.size()) + " light(s) at " +
-          std::to_string(n) + " elements, " + std::to_string(raysCast_) + " shadow rays, " +
-          formatNumber(seconds) + " s");
+  logInfo("direct light: " + std::to_string(lights_.size()) + " light(s) at " + std::to_string(n) +
+          " elements, " + std::to_string(raysCast_) + " shadow rays, " + formatNumber(seconds) +
+          " s");
 }
 
 void DirectLightStage::meshChanged(const std::vector<int>& changed, RadiosityProblem& problem) {
-  if (scene_.lights.empty()) return;
+  if (lights_.empty()) return;
   const int n = mesh_.elementCount();
   irradiance_.resize(n);
   if (keepPoints_) {
@@ -313,7 +322,7 @@ void DirectLightStage::meshChanged(const std::vector<int>& changed, RadiosityPro
 
 void DirectLightStage::addPointVariation(const RadiosityProblem& problem,
                                          std::vector<std::array<Rgb, 3>>& pointRadiosity) const {
-  if (scene_.lights.empty() || !keepPoints_ || pointRadiosity.size() != irradiance_.size()) return;
+  if (lights_.empty() || !keepPoints_ || pointRadiosity.size() != irradiance_.size()) return;
   for (size_t e = 0; e < pointRadiosity.size(); ++e)
     for (int k = 0; k < 3; ++k)
       pointRadiosity[e][k] += problem.reflectance[e] * (pointIrradiance_[e][k] - pointMean_[e]);

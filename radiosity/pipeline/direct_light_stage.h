@@ -60,9 +60,12 @@ Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vec
 class DirectLightStage {
  public:
   // With `exposure`, points in a buried part of an element are left out (with no receiver point
-  // left, E_d at an exposed point of the element stands for them).
+  // left, E_d at an exposed point of the element stands for them). With `lights` (indices into
+  // scene.lights, e.g. one light group's), only those shoot; each keeps the random numbers it
+  // has among all the lights.
   DirectLightStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
-                   const SolveOptions& options, const ElementExposure* exposure = nullptr);
+                   const SolveOptions& options, const ElementExposure* exposure = nullptr,
+                   const std::vector<size_t>* lights = nullptr);
 
   // Computes E_d for every element and adds ρ E_d to problem.emission; logs one line.
   void apply(RadiosityProblem& problem);
@@ -94,7 +97,8 @@ class DirectLightStage {
   // Whether the solution keeps B at the receiver points (analytic factors, 3 points; the
   // condition keepSolution applies), so E_d is wanted there too.
   bool keepPoints_;
-  std::vector<const Light*> pointLights_;  // the scene's point and spot lights
+  std::vector<size_t> lights_;             // the scene's lights that shoot here
+  std::vector<const Light*> pointLights_;  // the point and spot lights among them
   bool samplePointLights_;                 // more of them than kEveryPointLight
   std::vector<Rgb> irradiance_;
   std::vector<std::array<Rgb, 3>> pointIrradiance_;  // E_d at each receiver point

@@ -11,12 +11,13 @@ namespace rad {
 
 FormFactorStage::FormFactorStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
                                  const RadiosityProblem& problem, const SolveOptions& options,
-                                 const ElementExposure* exposure)
+                                 const ElementExposure* exposure, std::vector<int> rayMultipliers)
     : mesh_(mesh),
       problem_(problem),
       hemisphere_(
           mesh, rays,
-          {options.raysPerElement, options.seed, emitterRayMultipliers(problem),
+          {options.raysPerElement, options.seed,
+           rayMultipliers.empty() ? emitterRayMultipliers(problem) : std::move(rayMultipliers),
            scene.hasSpecular() ? specularSurfaces(scene, mesh) : std::vector<SpecularSurface>(),
            HemisphereOptions().maxSpecularDepth, exposure}),
       cache_(hemisphere_) {

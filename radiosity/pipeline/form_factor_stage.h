@@ -26,9 +26,11 @@ class FormFactorStage {
  public:
   // `exposure` (optional, must outlive the stage): hemisphere rows shoot from the exposed parts
   // of elements only.
+  // `rayMultipliers`: each emitter row's rays relative to an average row; empty: from `problem`
+  // (emitterRayMultipliers).
   FormFactorStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
                   const RadiosityProblem& problem, const SolveOptions& options,
-                  const ElementExposure* exposure = nullptr);
+                  const ElementExposure* exposure = nullptr, std::vector<int> rayMultipliers = {});
 
   ShotRows& shots();
   // Every row at once, for the gathering solvers (with a progress line).

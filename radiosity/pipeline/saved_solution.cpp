@@ -124,7 +124,7 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
 }
 
 bool solutionIsReusable(const SolveOptions& options) {
-  return !(options.refineThreshold > 0) && !options.keepBounceTerms;
+  return !(options.refineThreshold > 0) && !options.keepBounceTerms && !options.lightGroups;
 }
 
 std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene& scene,
@@ -133,6 +133,7 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   const std::string jsonPath = (base / kSolutionJson).string();
   if (!solutionIsReusable(options)) {
     whyNot = options.keepBounceTerms ? "--bounces-separate: the Jacobi terms are not saved"
+             : options.lightGroups   ? "--light-groups: a saved solution holds no layers"
                                      : "adaptive refinement: the mesh depends on the solve";
     return std::nullopt;
   }

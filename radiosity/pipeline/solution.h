@@ -8,10 +8,19 @@
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/core/rgb.h"
+#include "radiosity/scene/light_groups.h"
 #include "radiosity/scene/scene.h"
 #include "radiosity/solvers/radiosity_problem.h"
 
 namespace rad {
+
+// One light group's share of the solution (--light-groups): B per element, and at the receiver
+// points where the whole solution keeps them.
+struct LightLayer {
+  LightGroup group;
+  std::vector<Rgb> radiosity;
+  std::vector<std::array<Rgb, 3>> pointRadiosity;
+};
 
 // What a solve produced that writers, renderers and the viewer read: the scene, its mesh, the
 // per-element problem and the radiosity on it.
@@ -27,6 +36,9 @@ struct Solution {
   std::vector<Rgb> unshot;
   // With keepBounceTerms: term k = B_k − B_{k−1} = (rho F)^k E of the Jacobi iterates, k ≥ 0.
   std::vector<std::vector<Rgb>> bounceTerms;
+  // With --light-groups: one layer per light group; `radiosity` and `pointRadiosity` are their
+  // sums. Empty otherwise.
+  std::vector<LightLayer> layers;
 };
 
 // Why the iterations stopped.

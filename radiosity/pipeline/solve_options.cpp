@@ -45,6 +45,11 @@ void validateSolveOptions(const SolveOptions& options) {
     throw InputError(
         "adaptive refinement (--refine-threshold) needs --form-factors analytic and "
         "--solver progressive: patches keep shooting while the elements are refined");
+  if (options.lightGroups && options.refineThreshold > 0)
+    throw InputError(
+        "--light-groups with adaptive refinement (--refine-threshold): refinement would fit the "
+        "mesh to one mix of the groups, while the layers are meant to be mixed at will; use a "
+        "finer uniform mesh (--element-size) instead");
   if (!(options.timeLimit >= 0) || !std::isfinite(options.timeLimit))
     throw InputError("--time-limit must be a non-negative number of seconds");
   if (options.bounces >= 0 && options.solver != SolverKind::Jacobi)

@@ -48,6 +48,9 @@ struct SolveOptions {
   int refinePasses = 8;  // refinement: solve–refine rounds
   double timeLimit = 0;  // seconds from the start of the solve; 0: none. Past it the
                          // iterations stop and the solution so far is kept (not converged)
+  // bake --light-groups: one solve per light group (scene/light_groups.h) over the same form
+  // factors, kept as Solution::layers; the whole solution is their sum.
+  bool lightGroups = false;
 };
 
 // Throws InputError for values no solve can use (non-positive counts, NaN, out-of-range).

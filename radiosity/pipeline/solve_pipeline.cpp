@@ -13,6 +13,7 @@
 #include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
+#include "radiosity/pipeline/light_group_solve.h"
 #include "radiosity/pipeline/mesh_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/pipeline/refinement_stage.h"
@@ -142,36 +143,51 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   const ElementExposure exposure = solveExposure(options, *solution.mesh, rays);
   noteBuriedParts(exposure, *solution.mesh, report);
   solution.problem = makeProblem(solution.scene, *solution.mesh, &exposure);
-  DirectLightStage directLight(solution.scene, *solution.mesh, rays, options, &exposure);
-  directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
-  noteBlackElements(solution, report);
-  FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options,
-                              &exposure);
-  throwIfInterrupted();
-
-  t = Clock::now();
-  const std::unique_ptr<Solver> solver =
-      makeSolver(options.solver, solution.problem, formFactors.shots(),
-                 [&] { return formFactors.gatheringMatrix(); });
-  const IterationLimits limits = iterationLimits(options, solution.mesh->elementCount(), start);
-  const bool keepTerms = options.keepBounceTerms && options.solver == SolverKind::Jacobi;
-  AdaptiveRefinement refinement(options, *solution.mesh);
   report.elementsBeforeRefinement = solution.mesh->elementCount();
-  for (int pass = 0;; ++pass) {
-    report.stoppedBy = iterate(*solver, limits, keepTerms ? &solution.bounceTerms : nullptr);
-    report.converged = converged(report.stoppedBy);
-    if (!report.converged ||
-        !refinement.refine(pass, solution, formFactors, directLight, *solver, report))
-      break;
-  }
-  refinement.finish(report);
-  const double solveAndRows = since(t);
-  formFactors.report(report, options.solver);
-  directLight.report(report);
-  report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
+  const IterationLimits limits = iterationLimits(options, solution.mesh->elementCount(), start);
+  if (options.lightGroups) {
+    // One problem per light group over the same form factors; the whole is their sum.
+    std::vector<LightGroupProblem> groups = makeLightGroupProblems(
+        solution.scene, *solution.mesh, rays, options, &exposure, solution.problem);
+    noteBlackElements(solution, report);
+    FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options,
+                                &exposure, lightGroupRayMultipliers(groups));
+    throwIfInterrupted();
+    t = Clock::now();
+    solveLightGroups(groups, formFactors, options, limits, solution, report);
+    const double solveAndRows = since(t);
+    formFactors.report(report, options.solver);
+    report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
+  } else {
+    DirectLightStage directLight(solution.scene, *solution.mesh, rays, options, &exposure);
+    directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
+    noteBlackElements(solution, report);
+    FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options,
+                                &exposure);
+    throwIfInterrupted();
 
-  keepSolution(*solver, formFactors.analytic() && options.receiverPoints == 3, solution, report);
-  directLight.addPointVariation(solution.problem, solution.pointRadiosity);
+    t = Clock::now();
+    const std::unique_ptr<Solver> solver =
+        makeSolver(options.solver, solution.problem, formFactors.shots(),
+                   [&] { return formFactors.gatheringMatrix(); });
+    const bool keepTerms = options.keepBounceTerms && options.solver == SolverKind::Jacobi;
+    AdaptiveRefinement refinement(options, *solution.mesh);
+    for (int pass = 0;; ++pass) {
+      report.stoppedBy = iterate(*solver, limits, keepTerms ? &solution.bounceTerms : nullptr);
+      report.converged = converged(report.stoppedBy);
+      if (!report.converged ||
+          !refinement.refine(pass, solution, formFactors, directLight, *solver, report))
+        break;
+    }
+    refinement.finish(report);
+    const double solveAndRows = since(t);
+    formFactors.report(report, options.solver);
+    directLight.report(report);
+    report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
+
+    keepSolution(*solver, formFactors.analytic() && options.receiverPoints == 3, solution, report);
+    directLight.addPointVariation(solution.problem, solution.pointRadiosity);
+  }
   warnIfNotConverged(limits, solution, report);
   report.times.total = since(start);
   return result;

@@ -564,6 +564,7 @@ Light convertLight(const tinygltf::Model& model, int index, const Eigen::Matrix4
   if (!(axis.norm() > 0) || !axis.allFinite() || !position.allFinite())
     fail(path, pointer, "the node's transform gives the light no direction");
   Light light;
+  light.group = l.name;
   light.position = position;
   light.direction = axis.normalized();
   const Rgb radiometric = colour * (l.intensity / kLumensPerWatt);

@@ -100,13 +100,13 @@ class LightReader {
 Light readLight(const LightReader& r, const std::string& type) {
   Light light;
   if (type == "point") {
-    r.allowOnly({"type", "position", "intensity", "comment"});
+    r.allowOnly({"type", "position", "intensity", "group", "comment"});
     light.type = LightType::Point;
     light.position = r.vector("position");
     light.intensity = r.colour("intensity");
   } else if (type == "spot") {
     r.allowOnly({"type", "position", "direction", "intensity", "cone_degrees", "inner_cone_degrees",
-                 "comment"});
+                 "group", "comment"});
     light.type = LightType::Spot;
     light.position = r.vector("position");
     light.direction = r.direction("direction");
@@ -120,7 +120,8 @@ Light readLight(const LightReader& r, const std::string& type) {
     light.cosOuter = std::cos(outer * kDegrees);
     light.cosInner = std::cos(inner * kDegrees);
   } else if (type == "directional") {
-    r.allowOnly({"type", "direction", "irradiance", "angular_diameter_degrees", "comment"});
+    r.allowOnly(
+        {"type", "direction", "irradiance", "angular_diameter_degrees", "group", "comment"});
     light.type = LightType::Directional;
     light.direction = r.direction("direction");
     light.irradiance = r.colour("irradiance");
@@ -130,7 +131,8 @@ Light readLight(const LightReader& r, const std::string& type) {
         r.fail("angular_diameter_degrees", "must be in [0, 90) degrees");
     }
   } else if (type == "sky") {
-    r.allowOnly({"type", "model", "radiance", "zenith_radiance", "sun_direction", "up", "comment"});
+    r.allowOnly({"type", "model", "radiance", "zenith_radiance", "sun_direction", "up", "group",
+                 "comment"});
     light.type = LightType::Sky;
     std::string model = "uniform";
     if (r.has("model")) {
@@ -167,7 +169,7 @@ Light readLight(const LightReader& r, const std::string& type) {
     if (r.has("sun_direction"))
       r.fail("sun_direction", "only a cie_clear sky takes \"sun_direction\"");
   } else if (type == "environment") {
-    r.allowOnly({"type", "file", "up", "scale", "comment"});
+    r.allowOnly({"type", "file", "up", "scale", "group", "comment"});
     if (!r.at("file").is_string() || r.at("file").get<std::string>().empty())
       r.fail("file", "must be the image's file name (a non-empty string)");
     double scale = 1;
@@ -240,6 +242,12 @@ std::vector<Light> loadLights(const std::string& path) {
                   "each light needs a \"type\" string (point, spot, directional, sky, "
                   "environment)");
     lights.push_back(readLight(reader, list[i]["type"].get<std::string>()));
+    if (reader.has("group")) {
+      const nlohmann::json& group = reader.at("group");
+      if (!group.is_string() || group.get<std::string>().empty())
+        reader.fail("group", "must be a light group's name (a non-empty string)");
+      lights.back().group = group.get<std::string>();
+    }
   }
   return lights;
 }
@@ -254,6 +262,7 @@ Light skyLight(const Rgb& radiance) {
   Light light;
   light.type = LightType::Sky;
   light.radiance = radiance;
+  light.group = "sky";
   return light;
 }
 
@@ -267,6 +276,7 @@ Light sunLight(const Eigen::Vector3d& direction, const Rgb& irradiance) {
   light.direction = direction.normalized();
   light.irradiance = irradiance;
   light.angularDiameterDegrees = 0.53;
+  light.group = "sun";
   return light;
 }
 

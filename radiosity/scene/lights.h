@@ -37,6 +37,9 @@ struct Light {
   // Environment: its image (radiance × scale). CIE clear sky: the formula tabulated, which the
   // solve and the renders sample by and the local model integrates (cieClearSky builds it).
   std::shared_ptr<const EnvironmentMap> map;
+  // Its light group (bake --light-groups, scene/light_groups.h): the lights file's "group", a
+  // glTF light's name, "sky" / "sun" for the shortcuts; empty: a group of its own.
+  std::string group;
 };
 
 // Reads a lights file: {"lights": [{"type": "point"|"spot"|"directional"|"sky"|"environment",

@@ -532,6 +532,130 @@ TEST(CliBake, DefaultTexelDensityScalesWithTheScene) {
 // The baked glTF of a textured scene keeps the base colour (factor and the texture file's own
 // bytes) on TEXCOORD_0, the scene's UVs, and shows the lightmap as emissiveTexture on TEXCOORD_1;
 // the Khronos validator accepts it.
+// --- light groups --------------------------------------------------------------------------------
+
+// The Cornell box with a spot in group "lamp" (intensity × lampScale) and an ungrouped point light:
+// three layers, "light" (the ceiling's material), "lamp" and "point1".
+fs::path bakeLightGroups(const std::string& name, double lampScale, const std::string& extra = "") {
+  const fs::path dir = scratchPath(name);
+  fs::create_directories(dir);
+  std::ofstream(dir / "lamps.json")
+      << R"({"lights": [{"type": "spot", "position": [0.15, 0.5, 0.45], "direction": [0.1, -1, -0.1],
+          "intensity": [)"
+      << 0.05 * lampScale << ", " << 0.15 * lampScale << ", " << 0.3 * lampScale
+      << R"(], "cone_degrees": 35, "inner_cone_degrees": 25, "group": "lamp"},
+         {"type": "point", "position": [0.45, 0.45, 0.1], "intensity": [0.3, 0.18, 0.06]}]})";
+  const fs::path out = dir / "out";
+  const auto r = runRadiosity("bake " + kData + "/cornell_box/cornell_box.obj --out " +
+                              out.string() + " --lights " + (dir / "lamps.json").string() +
+                              " --light-groups --elements 300 --rays 64 --lightmap-size 128 "
+                              "--exposure 4 --quiet" +
+                              extra);
+  EXPECT_EQ(r.exitCode, 0) << r.stderrText;
+  return out;
+}
+
+const char* const kGroups[] = {"light", "lamp", "point1"};
+
+std::vector<float> floatAttribute(const tinygltf::Model& model, int accessor) {
+  const auto& acc = model.accessors[accessor];
+  const auto& view = model.bufferViews[acc.bufferView];
+  const float* p = reinterpret_cast<const float*>(model.buffers[view.buffer].data.data() +
+                                                  view.byteOffset + acc.byteOffset);
+  return std::vector<float>(p, p + 3 * acc.count);
+}
+
+TEST(CliBakeLightGroups, LayersSumToTheWholeInTheLightmapAndTheGlb) {
+  const fs::path out = bakeLightGroups("bake_groups", 1);
+  const auto summary = nlohmann::json::parse(readText(out / "bake.json"));
+  ASSERT_EQ(summary["light_groups"].size(), 3u);
+  for (int g = 0; g < 3; ++g) EXPECT_EQ(summary["light_groups"][g]["name"], kGroups[g]);
+  // Lightmap: texel by texel, the layers add up to the whole (float EXR rounding only).
+  const ImageRgb whole = readExr((out / "lightmap.exr").string());
+  std::vector<ImageRgb> layers;
+  for (const char* g : kGroups) {
+    layers.push_back(readExr((out / ("group_" + std::string(g) + "_lightmap.exr")).string()));
+    ASSERT_TRUE(fs::exists(out / ("group_" + std::string(g) + "_lightmap.png"))) << g;
+    ASSERT_TRUE(fs::exists(out / ("group_" + std::string(g) + "_vertex_colors.ply"))) << g;
+  }
+  double peak = 0;
+  for (const Rgb& px : whole.pixels) peak = std::max(peak, px.maxComponent());
+  ASSERT_GT(peak, 0);
+  std::vector<double> layerPeak(3, 0);
+  for (size_t i = 0; i < whole.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      double sum = 0;
+      for (int g = 0; g < 3; ++g) {
+        sum += layers[g].pixels[i][c];
+        layerPeak[g] = std::max(layerPeak[g], layers[g].pixels[i][c]);
+      }
+      ASSERT_NEAR(sum, whole.pixels[i][c], 1e-6 * peak) << "texel " << i;
+    }
+  for (int g = 0; g < 3; ++g) EXPECT_GT(layerPeak[g], 1e-3 * peak) << kGroups[g] << " is dark";
+
+  // glb: _LIGHT_GROUP_i per vertex sums to _RADIANCE; the extras name the layers.
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, (out / "scene_baked.glb").string()))
+      << err;
+  const auto& groups = model.asset.extras.Get("radiosity").Get("light_groups");
+  ASSERT_TRUE(groups.IsArray());
+  ASSERT_EQ(groups.ArrayLen(), 3u);
+  EXPECT_EQ(groups.Get(1).Get("name").Get<std::string>(), "lamp");
+  EXPECT_EQ(groups.Get(1).Get("lightmap_exr").Get(0).Get<std::string>(), "group_lamp_lightmap.exr");
+  const int lampTexture = groups.Get(1).Get("lightmap_textures").Get(0).GetNumberAsInt();
+  ASSERT_GE(lampTexture, 0);
+  ASSERT_LT(lampTexture, static_cast<int>(model.textures.size()));
+  const auto& attributes = model.meshes[0].primitives[0].attributes;
+  const std::vector<float> radiance = floatAttribute(model, attributes.at("_RADIANCE"));
+  std::vector<float> sum(radiance.size(), 0);
+  for (int g = 0; g < 3; ++g) {
+    const std::vector<float> layer =
+        floatAttribute(model, attributes.at("_LIGHT_GROUP_" + std::to_string(g)));
+    ASSERT_EQ(layer.size(), radiance.size());
+    for (size_t i = 0; i < layer.size(); ++i) sum[i] += layer[i];
+  }
+  for (size_t i = 0; i < sum.size(); ++i) ASSERT_NEAR(sum[i], radiance[i], 1e-5 * peak) << i;
+  validate(out / "scene_baked.glb");
+  fs::remove_all(out.parent_path());
+}
+
+// Linearity: a bake with the lamp twice as strong has the lamp's layer doubled and the other
+// layers unchanged (the rows do not depend on how strong a group is).
+TEST(CliBakeLightGroups, ScalingAGroupScalesOnlyItsLayer) {
+  const fs::path base = bakeLightGroups("bake_groups_base", 1);
+  const fs::path twice = bakeLightGroups("bake_groups_twice", 2.5);
+  for (int g = 0; g < 3; ++g) {
+    const std::string file = "group_" + std::string(kGroups[g]) + "_lightmap.exr";
+    const ImageRgb a = readExr((base / file).string());
+    const ImageRgb b = readExr((twice / file).string());
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    const double k = g == 1 ? 2.5 : 1;
+    double peak = 0;
+    for (const Rgb& px : a.pixels) peak = std::max(peak, px.maxComponent());
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(b.pixels[i][c], k * a.pixels[i][c], 1e-6 * k * peak) << file << " texel " << i;
+  }
+  fs::remove_all(base.parent_path());
+  fs::remove_all(twice.parent_path());
+}
+
+TEST(CliBakeLightGroups, RefusesTheGatherAndRefinementAndWritesNothing) {
+  const fs::path dir = scratchPath("bake_groups_bad");
+  const std::string bake = "bake " + kData + "/cornell_box/cornell_box.obj --out " + dir.string() +
+                           " --light-groups --elements 100 ";
+  auto r = runRadiosity(bake + "--gather 4");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("--gather with --light-groups"), std::string::npos) << r.stderrText;
+  r = runRadiosity(bake + "--form-factors analytic --refine-threshold 0.1");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("--light-groups with adaptive refinement"), std::string::npos)
+      << r.stderrText;
+  EXPECT_FALSE(fs::exists(dir));
+}
+
 TEST(BakedGlb, KeepsTheBaseColourTextureOnTexcoord0AndTheLightmapOnTexcoord1) {
   const fs::path dir = scratchPath("baked_glb_texture");
   fs::create_directories(dir);

@@ -76,6 +76,32 @@ TEST(Lights, ErrorsNameTheFileLineAndPointer) {
   fs::remove_all(dir);
 }
 
+TEST(Lights, ReadsLightGroupsAndRefusesAnEmptyOrNonStringGroup) {
+  const fs::path dir = scratch("groups");
+  const std::string path = (dir / "l.json").string();
+  std::ofstream(path) << R"({"lights": [
+    {"type": "point", "position": [0, 1, 0], "intensity": [1, 1, 1], "group": "desk"},
+    {"type": "sky", "radiance": [1, 1, 1]}]})";
+  const std::vector<Light> lights = loadLights(path);
+  EXPECT_EQ(lights[0].group, "desk");
+  EXPECT_EQ(lights[1].group, "");  // a group of its own
+  EXPECT_EQ(skyLight(Rgb::all(1)).group, "sky");
+  EXPECT_EQ(sunLight({0, -1, 0}, Rgb::all(1)).group, "sun");
+  for (const char* bad : {R"("")", "3", "[\"a\"]"}) {
+    std::ofstream(path) << "{\"lights\": [\n  {\"type\": \"point\", \"position\": [0, 1, 0],\n"
+                           "   \"intensity\": [1, 1, 1], \"group\": "
+                        << bad << "}]}";
+    try {
+      loadLights(path);
+      FAIL() << "accepted the group " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), 3) << bad;
+      EXPECT_NE(std::string(e.what()).find("/lights/0/group"), std::string::npos) << e.what();
+    }
+  }
+  fs::remove_all(dir);
+}
+
 TEST(Lights, ReadsTheCieOvercastSkyAndRefusesUnknownModelsAndTheOtherModelsRadiance) {
   const fs::path dir = scratch("overcast");
   const std::string path = (dir / "l.json").string();
