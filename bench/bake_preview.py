@@ -3,7 +3,11 @@
 Cornell box camera, texturing each pixel by bilinear lookup in the lightmap: what a game engine
 shows with the lightmap alone. Pure Python (zlib for PNG), no renderer needed.
 
-    python3 bench/bake_preview.py OUT_DIR preview.png [size]
+    python3 bench/bake_preview.py OUT_DIR preview.png [size] [--mix GROUP=WEIGHT,...]
+
+With --mix (a bake with --light-groups), the lightmap is the weighted sum of the named groups'
+layers (group_GROUP_lightmap.png, decoded from sRGB to linear, summed, encoded again), as an engine
+mixes them at run time; groups left out weigh 0.
 """
 import math, struct, sys, zlib
 
@@ -45,10 +49,42 @@ def write_png(path, w, h, pixels):
                            + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
 
 
+def to_linear(c):
+    c /= 255
+    return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+
+def to_srgb8(x):
+    x = min(max(x, 0.0), 1.0)
+    return int(round(255 * (12.92 * x if x <= 0.0031308 else 1.055 * x ** (1 / 2.4) - 0.055)))
+
+
+def mixed_layers(out_dir, weights):
+    """The light groups' lightmap layers summed with `weights` ({group: weight}), in linear light."""
+    tw = th = None
+    total = None
+    for name, weight in weights.items():
+        w, h, rows = read_png(out_dir + "/group_" + name + "_lightmap.png")
+        if total is None:
+            tw, th, total = w, h, [[0.0] * (3 * w) for _ in range(h)]
+        assert (w, h) == (tw, th), "layers of different sizes"
+        for y in range(h):
+            line, acc = rows[y], total[y]
+            for i in range(3 * w):
+                acc[i] += weight * to_linear(line[i])
+    return tw, th, [bytearray(to_srgb8(x) for x in line) for line in total]
+
+
 def main():
-    out_dir, target = sys.argv[1], sys.argv[2]
-    size = int(sys.argv[3]) if len(sys.argv) > 3 else 384
-    tw, th, tex = read_png(out_dir + "/lightmap.png")
+    args = sys.argv[1:]
+    mix = None
+    if "--mix" in args:
+        at = args.index("--mix")
+        mix = {k: float(v) for k, v in (item.split("=") for item in args[at + 1].split(","))}
+        del args[at:at + 2]
+    out_dir, target = args[0], args[1]
+    size = int(args[2]) if len(args) > 2 else 384
+    tw, th, tex = mixed_layers(out_dir, mix) if mix else read_png(out_dir + "/lightmap.png")
     v, vt, faces = [], [], []
     for line in open(out_dir + "/scene_baked.obj"):
         p = line.split()
