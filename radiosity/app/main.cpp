@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   rad::registerBakeCommand(app, run);
   rad::registerRenderCommand(app, run);
   rad::registerCompareCommand(app, run);
+  rad::registerRelightCommand(app, run);
 #ifdef RADIOSITY_HAS_VIEWER
   rad::registerViewCommand(app, run);
 #endif

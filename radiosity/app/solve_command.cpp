@@ -164,6 +164,10 @@ void registerSolveCommand(CLI::App& app, CommandAction& run) {
   solve->add_option("--out", options->outputDir, "Output directory (created if missing)")
       ->required();
   addSolveOptions(*solve, *options, *solverName);
+  solve->add_flag("--keep-factors", options->keepFactors,
+                  "Keep the form factors, exposed areas and each light's first shot in "
+                  "factors.bin, so `radiosity relight` can change colours and light strengths "
+                  "without casting a ray (hemisphere rows, uniform mesh)");
   addCommonFlags(*solve);
   solve->callback([&run, solve, options, solverName] {
     run = [solve, options, solverName] {

@@ -13,6 +13,7 @@
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/output/tone_map.h"
 #include "radiosity/output/vertex_colors_ply.h"
+#include "radiosity/pipeline/kept_factors.h"
 #include "radiosity/pipeline/saved_solution.h"
 #include "radiosity/pipeline/solution_tone_map.h"
 #ifdef RADIOSITY_HAS_VIEWER
@@ -123,6 +124,11 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
         {"L", "outgoing radiance B/pi, W/(m^2 sr)"}}},
       {"tone_map", {{"exposure", exposure}, {"operator", "clamp(exposure*L) then sRGB OETF"}}},
       {"skipped", skipped},
+      {"relight", r.relitFrom.empty()
+                      ? json()
+                      : json{{"kept_factors", r.relitFrom},
+                             {"rays_cast", r.raysCast + r.directLightRays + r.exposureProbeRays},
+                             {"note", "solved again from the kept factors: no ray cast"}}},
   };
 }
 
@@ -158,6 +164,14 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
     files.push_back(saved.get());
   }
 
+  // What relight reuses (solve --keep-factors).
+  std::unique_ptr<AtomicFile> factors;
+  if (result.kept) {
+    factors = std::make_unique<AtomicFile>((dir / kKeptFactorsFile).string(), /*binary=*/true);
+    writeKeptFactors(factors->stream(), *result.kept);
+    files.push_back(factors.get());
+  }
+
   result.report.times.output =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.report.times.total += result.report.times.output;
@@ -186,6 +200,7 @@ void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
   }
   logInfo("wrote the solution files (elements.csv, vertex_colors.ply, summary.json" +
           std::string(solutionIsReusable(options) ? ", solution.json" : "") +
+          std::string(result.kept ? ", factors.bin" : "") +
           std::string(kWritesVtp ? ", solution.vtp" : "") + ") to " + options.outputDir);
 }
 

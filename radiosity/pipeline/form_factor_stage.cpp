@@ -50,6 +50,20 @@ SparseRows FormFactorStage::gatheringMatrix() {
   return f;
 }
 
+std::vector<FormFactorRow> FormFactorStage::takeAllRows() {
+  RAD_CHECK_MSG(analytic_ == nullptr, "kept factors are hemisphere rows");
+  uint64_t missing = 0;
+  for (int e = 0; e < mesh_.elementCount(); ++e)
+    if (!cache_.hasRow(e)) missing += hemisphere_.raysForRow(e);
+  Progress progress("rows kept", missing, "rays");
+  cache_.computeRows(std::vector<bool>(mesh_.elementCount(), true), &progress);
+  progress.finish(std::to_string(mesh_.elementCount()) + " rows");
+  std::vector<FormFactorRow> rows;
+  rows.reserve(mesh_.elementCount());
+  for (int e = 0; e < mesh_.elementCount(); ++e) rows.push_back(cache_.row(e));
+  return rows;
+}
+
 const std::vector<char>& FormFactorStage::partlyShadowed() const {
   RAD_CHECK_MSG(analytic_ != nullptr, "shadow boundaries are known to analytic factors only");
   return analytic_->partlyShadowed();

@@ -25,8 +25,8 @@ std::vector<LightGroupProblem> makeLightGroupProblems(const Scene& scene, const 
     for (int e = 0; e < mesh.elementCount(); ++e)
       if (!member[mesh.material(e)]) g.problem.emission[e] = Rgb();
     if (!g.group.lights.empty()) {
-      g.directLight = std::make_unique<DirectLightStage>(scene, mesh, rays, options, exposure,
-                                                         &g.group.lights);
+      g.directLight =
+          std::make_unique<DirectLightStage>(scene, mesh, rays, options, exposure, &g.group.lights);
       g.directLight->apply(g.problem);
     }
     groups.push_back(std::move(g));

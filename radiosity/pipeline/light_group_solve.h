@@ -24,9 +24,9 @@ struct LightGroupProblem {
   std::unique_ptr<DirectLightStage> directLight;  // null when the group has no lights
 };
 
-// The scene's light groups (scene/light_groups.h) as problems over `mesh`, from `base` (makeProblem:
-// the materials' emission, no lights yet). Sets base.emission to the sum of the groups' emission,
-// so the whole problem is the layers' sum by construction.
+// The scene's light groups (scene/light_groups.h) as problems over `mesh`, from `base`
+// (makeProblem: the materials' emission, no lights yet). Sets base.emission to the sum of the
+// groups' emission, so the whole problem is the layers' sum by construction.
 std::vector<LightGroupProblem> makeLightGroupProblems(const Scene& scene, const PatchMesh& mesh,
                                                       const RayCaster& rays,
                                                       const SolveOptions& options,

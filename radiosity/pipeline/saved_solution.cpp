@@ -11,6 +11,7 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/output/elements_csv.h"
+#include "radiosity/pipeline/fingerprint.h"
 #include "radiosity/pipeline/mesh_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
 
@@ -18,37 +19,6 @@ namespace rad {
 namespace {
 
 constexpr const char* kFormat = "radiosity saved solution 1";
-
-// FNV-1a over the bytes of everything fed to it.
-class Fingerprint {
- public:
-  template <typename T>
-  void add(const T& value) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    addBytes(&value, sizeof(T));
-  }
-  void add(const std::string& s) {
-    add(s.size());
-    addBytes(s.data(), s.size());
-  }
-  void add(const Rgb& c) {
-    add(c.r);
-    add(c.g);
-    add(c.b);
-  }
-  std::string hex() const {
-    std::ostringstream out;
-    out << std::hex << hash_;
-    return out.str();
-  }
-
- private:
-  void addBytes(const void* data, size_t n) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < n; ++i) hash_ = (hash_ ^ p[i]) * 0x100000001b3ull;
-  }
-  uint64_t hash_ = 0xcbf29ce484222325ull;
-};
 
 }  // namespace
 

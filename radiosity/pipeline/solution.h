@@ -79,6 +79,7 @@ struct SolveReport {
   uint64_t exposureProbeRays = 0;
   int threads = 0;
   bool reusedSavedSolution = false;
+  std::string relitFrom;  // relight: the kept factors the solve reused (no ray cast)
   StageTimes times;
   std::vector<SkipNote> skipped;
 
@@ -86,9 +87,13 @@ struct SolveReport {
   void skip(std::string what, std::string why);
 };
 
+struct KeptFactors;
+
 struct SolveResult {
   Solution solution;
   SolveReport report;
+  // With --keep-factors: what relight needs (kept_factors.h); null otherwise.
+  std::shared_ptr<const KeptFactors> kept;
 };
 
 }  // namespace rad

@@ -50,6 +50,11 @@ void validateSolveOptions(const SolveOptions& options) {
         "--light-groups with adaptive refinement (--refine-threshold): refinement would fit the "
         "mesh to one mix of the groups, while the layers are meant to be mixed at will; use a "
         "finer uniform mesh (--element-size) instead");
+  if (options.keepFactors && (options.formFactors != FormFactorMethod::Hemisphere ||
+                              options.refineThreshold > 0 || options.lightGroups))
+    throw InputError(
+        "--keep-factors keeps hemisphere rows over a uniform mesh: not with --form-factors "
+        "analytic, adaptive refinement or light groups");
   if (!(options.timeLimit >= 0) || !std::isfinite(options.timeLimit))
     throw InputError("--time-limit must be a non-negative number of seconds");
   if (options.bounces >= 0 && options.solver != SolverKind::Jacobi)

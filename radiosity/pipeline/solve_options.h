@@ -51,6 +51,9 @@ struct SolveOptions {
   // bake --light-groups: one solve per light group (scene/light_groups.h) over the same form
   // factors, kept as Solution::layers; the whole solution is their sum.
   bool lightGroups = false;
+  // solve --keep-factors: keep the rows, exposed areas and each light's E_d (kept_factors.h) for
+  // `relight`; every row is computed, and emitter rows get rays by keptRayMultipliers.
+  bool keepFactors = false;
 };
 
 // Throws InputError for values no solve can use (non-positive counts, NaN, out-of-range).

@@ -13,6 +13,7 @@
 #include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
+#include "radiosity/pipeline/kept_factors.h"
 #include "radiosity/pipeline/light_group_solve.h"
 #include "radiosity/pipeline/mesh_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
@@ -79,6 +80,48 @@ void keepSolution(const Solver& solver, bool pointValues, Solution& solution, So
   report.progressMeasure = solver.progressMeasure();
   report.iterations = solver.iterations();
   report.finalProgress = solver.progress();
+}
+
+// --keep-factors: each light's first shot on its own (no lamp sampling across lights, so relight
+// can scale each E_d), added to the emission; the rays per emitter row from each source's own
+// shares (keptRayMultipliers). Returns the kept factors without their rows (taken after the
+// solve).
+std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster& rays,
+                                             const SolveOptions& options,
+                                             const ElementExposure& exposure,
+                                             std::vector<int>& rayMultipliers,
+                                             SolveReport& report) {
+  const Scene& scene = solution.scene;
+  const PatchMesh& mesh = *solution.mesh;
+  auto kept = std::make_shared<KeptFactors>();
+  kept->scenePath = options.scenePath;
+  kept->fingerprint = keptFactorsFingerprint(scene, options);
+  kept->options = options;
+  kept->area = solution.problem.area;
+  std::vector<std::vector<Rgb>> sources;
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    if (!scene.materials[m].isEmitter()) continue;
+    std::vector<Rgb>& power = sources.emplace_back(mesh.elementCount());
+    for (int e = 0; e < mesh.elementCount(); ++e)
+      if (mesh.material(e) == static_cast<int>(m)) power[e] = solution.problem.emission[e];
+  }
+  uint64_t lightRays = 0;
+  const std::vector<LightGroup> groups = lightGroups(scene);
+  kept->lightGroups.resize(scene.lights.size());
+  for (const LightGroup& g : groups)
+    for (size_t l : g.lights) kept->lightGroups[l] = g.name;
+  for (size_t l = 0; l < scene.lights.size(); ++l) {
+    const std::vector<size_t> one{l};
+    DirectLightStage stage(scene, mesh, rays, options, &exposure, &one);
+    stage.apply(solution.problem);
+    kept->lightTypes.push_back(lightTypeName(scene.lights[l].type));
+    kept->lightIrradiance.push_back(stage.irradiance());
+    sources.push_back(stage.irradiance());
+    lightRays += stage.raysCast();
+  }
+  report.directLightRays = lightRays;
+  rayMultipliers = keptRayMultipliers(solution.problem.area, sources);
+  return kept;
 }
 
 void warnIfNotConverged(const IterationLimits& limits, const Solution& solution,
@@ -160,10 +203,16 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
   } else {
     DirectLightStage directLight(solution.scene, *solution.mesh, rays, options, &exposure);
-    directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
+    std::shared_ptr<KeptFactors> kept;
+    std::vector<int> rayMultipliers;  // empty: from the problem's emission
+    if (options.keepFactors) {
+      kept = keepLightsApart(solution, rays, options, exposure, rayMultipliers, report);
+    } else {
+      directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
+    }
     noteBlackElements(solution, report);
     FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options,
-                                &exposure);
+                                &exposure, std::move(rayMultipliers));
     throwIfInterrupted();
 
     t = Clock::now();
@@ -181,12 +230,14 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     }
     refinement.finish(report);
     const double solveAndRows = since(t);
+    if (kept) kept->rows = formFactors.takeAllRows();  // the rows shooting never asked for too
     formFactors.report(report, options.solver);
-    directLight.report(report);
+    if (!kept) directLight.report(report);
     report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
 
     keepSolution(*solver, formFactors.analytic() && options.receiverPoints == 3, solution, report);
     directLight.addPointVariation(solution.problem, solution.pointRadiosity);
+    result.kept = std::move(kept);
   }
   warnIfNotConverged(limits, solution, report);
   report.times.total = since(start);

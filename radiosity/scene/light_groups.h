@@ -13,10 +13,10 @@ namespace rad {
 // same form factors and the layers sum to the whole; an engine can dim or recolour each layer at
 // run time without a re-bake.
 struct LightGroup {
-  std::string name;              // as the scene or the lights file names it
-  std::string fileName;          // `name` with every character but [A-Za-z0-9._-] as '_'
-  std::vector<int> materials;    // emissive materials (Scene::materials indices)
-  std::vector<size_t> lights;    // Scene::lights indices
+  std::string name;            // as the scene or the lights file names it
+  std::string fileName;        // `name` with every character but [A-Za-z0-9._-] as '_'
+  std::vector<int> materials;  // emissive materials (Scene::materials indices)
+  std::vector<size_t> lights;  // Scene::lights indices
 };
 
 // The scene's light groups, in order of first appearance (emissive materials first, then the

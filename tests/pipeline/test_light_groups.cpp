@@ -117,7 +117,8 @@ TEST(LightGroups, LayersSumToTheWholeAndToAnUngroupedSolve) {
     for (const LightLayer& layer : s.layers) sum += layer.radiosity[e];
     for (int c = 0; c < 3; ++c) {
       EXPECT_NEAR(sum[c], s.radiosity[e][c], 1e-12 * scale);
-      EXPECT_NEAR(s.radiosity[e][c], whole.solution.radiosity[e][c], 1e-6 * scale) << "element " << e;
+      EXPECT_NEAR(s.radiosity[e][c], whole.solution.radiosity[e][c], 1e-6 * scale)
+          << "element " << e;
     }
     for (int k = 0; k < 3; ++k) {
       Rgb pointSum;
@@ -144,8 +145,7 @@ TEST(LightGroups, ScalingOneGroupScalesItsLayerAndLeavesTheOthers) {
     SolveOptions o = quick(FormFactorMethod::Hemisphere);
     o.lightGroups = true;
     const SolveResult base = solveScene(litCornell(), o);
-    const SolveResult scaled =
-        solveScene(scaleCeiling ? litCornell(1, k) : litCornell(k, 1), o);
+    const SolveResult scaled = solveScene(scaleCeiling ? litCornell(1, k) : litCornell(k, 1), o);
     const size_t changed = scaleCeiling ? 0 : 1;  // "light" (the ceiling) or "lamp"
     ASSERT_EQ(base.solution.layers.size(), 3u);
     ASSERT_EQ(scaled.solution.layers.size(), 3u);

@@ -1,0 +1,102 @@
+// `radiosity relight DIR [--override FILE]`: a solve kept with `solve --keep-factors` solved
+// again with other material colours, emission or light strengths, from its kept form factors and
+// first shot: no ray is cast. The outputs (elements.csv, vertex_colors.ply, summary.json, …) are
+// rewritten in DIR, or written to --out.
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "radiosity/app/commands.h"
+#include "radiosity/app/solve_outputs.h"
+#include "radiosity/core/errors.h"
+#include "radiosity/core/interrupt.h"
+#include "radiosity/core/log.h"
+#include "radiosity/pipeline/kept_factors.h"
+#include "radiosity/pipeline/relight.h"
+#include "radiosity/scene/scene_overrides.h"
+
+namespace rad {
+namespace {
+
+struct RelightOptions {
+  std::string dir;
+  std::string overrideFile;
+  std::string outputDir;  // default: dir
+  std::optional<std::string> solverName;
+  std::optional<double> tolerance;
+  std::optional<int> maxIterations;
+  int threads = 0;
+};
+
+void runRelight(const RelightOptions& o) {
+  const std::string keptPath = (std::filesystem::path(o.dir) / kKeptFactorsFile).string();
+  if (!std::filesystem::exists(keptPath))
+    throw InputError(o.dir, 0,
+                     "no kept form factors (" + std::string(kKeptFactorsFile) +
+                         ") here: solve with --keep-factors --out " + o.dir + " first");
+  const KeptFactors kept = readKeptFactors(keptPath);
+  Scene scene = loadKeptScene(kept);
+  std::vector<Rgb> lightScale(kept.lightIrradiance.size(), Rgb::all(1));
+  if (!o.overrideFile.empty()) {
+    std::vector<std::string> materialNames;
+    for (const Material& m : scene.materials) materialNames.push_back(m.name);
+    const SceneOverrides overrides =
+        loadSceneOverrides(o.overrideFile, materialNames, kept.lightGroups);
+    for (const auto& [index, change] : overrides.materials) {
+      Material& m = scene.materials[static_cast<size_t>(index)];
+      if (change.diffuse) m.diffuse = *change.diffuse;
+      if (change.emission) m.emission = *change.emission;
+    }
+    lightScale = overrides.lightScale;
+  }
+  SolveOptions solver = kept.options;
+  if (o.solverName) solver.solver = parseSolverKind(*o.solverName);
+  if (o.tolerance) solver.tolerance = *o.tolerance;
+  if (o.maxIterations) solver.maxIterations = *o.maxIterations;
+  solver.threads = o.threads;
+  solver.outputDir = o.outputDir.empty() ? o.dir : o.outputDir;
+  SolveResult result = relightScene(kept, keptPath, std::move(scene), lightScale, solver);
+  throwIfInterrupted();
+  SolveOptions written = kept.options;
+  written.solver = solver.solver;
+  written.tolerance = solver.tolerance;
+  written.maxIterations = solver.maxIterations;
+  written.outputDir = solver.outputDir;
+  written.keepFactors = false;  // factors.bin stays as the solve wrote it
+  {
+    OutputSection writing;
+    writeSolveOutputs(written, result);
+  }
+  clearInterrupt();
+  logInfo("relit " + kept.scenePath + " from " + keptPath + " in " +
+          formatNumber(result.report.times.total) + " s, no ray cast");
+}
+
+}  // namespace
+
+void registerRelightCommand(CLI::App& app, CommandAction& run) {
+  auto o = std::make_shared<RelightOptions>();
+  CLI::App* relight = app.add_subcommand(
+      "relight",
+      "Solve a kept solve (solve --keep-factors) again with other colours or light strengths, "
+      "casting no ray");
+  relight->add_option("dir", o->dir, "Output directory of `radiosity solve --keep-factors`")
+      ->required();
+  relight
+      ->add_option("--override", o->overrideFile,
+                   "JSON file: {\"materials\": {NAME: {\"diffuse\": [r,g,b], \"emission\": "
+                   "[r,g,b]}}, \"lights\": {INDEX or GROUP: {\"scale\": k or [r,g,b]}}}")
+      ->check(CLI::ExistingFile);
+  relight->add_option("--out", o->outputDir, "Write the outputs here instead of into DIR");
+  relight->add_option("--solver", o->solverName,
+                      "Solver (default: the kept solve's): " + solverKindNames());
+  relight->add_option("--tolerance", o->tolerance,
+                      "Relative tolerance (default: the kept solve's)");
+  relight->add_option("--max-iterations", o->maxIterations, "Iteration budget (0: the default)");
+  relight->add_option("--threads", o->threads, "Worker threads (0: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  addCommonFlags(*relight);
+  relight->callback([&run, o] { run = [o] { runRelight(*o); }; });
+}
+
+}  // namespace rad

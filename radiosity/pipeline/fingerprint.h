@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <type_traits>
+
+#include "radiosity/core/rgb.h"
+
+namespace rad {
+
+// FNV-1a over the bytes of everything fed to it: what a saved solution or kept form factors were
+// made from, to tell whether a later scene and options still match them.
+class Fingerprint {
+ public:
+  template <typename T>
+  void add(const T& value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    addBytes(&value, sizeof(T));
+  }
+  void add(const std::string& s) {
+    add(s.size());
+    addBytes(s.data(), s.size());
+  }
+  void add(const Rgb& c) {
+    add(c.r);
+    add(c.g);
+    add(c.b);
+  }
+  std::string hex() const {
+    std::ostringstream out;
+    out << std::hex << hash_;
+    return out.str();
+  }
+
+ private:
+  void addBytes(const void* data, size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i) hash_ = (hash_ ^ p[i]) * 0x100000001b3ull;
+  }
+  uint64_t hash_ = 0xcbf29ce484222325ull;
+};
+
+}  // namespace rad

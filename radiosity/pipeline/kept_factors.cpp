@@ -1,0 +1,319 @@
+#include "radiosity/pipeline/kept_factors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <type_traits>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/pipeline/fingerprint.h"
+#include "radiosity/pipeline/resource_limits.h"
+
+namespace rad {
+namespace {
+
+constexpr const char* kMagic = "radiosity kept factors 1\n";
+constexpr uint64_t kMaxHeaderBytes = 1 << 24;
+
+template <typename T>
+void put(std::ostream& out, const T& value) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  out.write(reinterpret_cast<const char*>(&value), sizeof(T));  // little-endian hosts only
+}
+
+template <typename T>
+void putArray(std::ostream& out, const std::vector<T>& values) {
+  out.write(reinterpret_cast<const char*>(values.data()),
+            static_cast<std::streamsize>(values.size() * sizeof(T)));
+}
+
+// Reads the file's parts in order; every read that falls short names the part and the file.
+class Reader {
+ public:
+  explicit Reader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
+    if (!in_) throw InputError(path, 0, "cannot open the kept form factors");
+    in_.seekg(0, std::ios::end);
+    size_ = static_cast<uint64_t>(in_.tellg());
+    in_.seekg(0);
+  }
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(path_, 0, what); }
+  uint64_t left() const { return size_ - offset_; }
+  void bytes(void* to, uint64_t n, const std::string& what) {
+    if (n > left())
+      fail("cut short in " + what + " (the file ends at byte " + std::to_string(size_) + ")");
+    in_.read(static_cast<char*>(to), static_cast<std::streamsize>(n));
+    if (!in_) fail("cannot read " + what);
+    offset_ += n;
+  }
+  template <typename T>
+  T get(const std::string& what) {
+    T value;
+    bytes(&value, sizeof(T), what);
+    return value;
+  }
+  template <typename T>
+  std::vector<T> array(uint64_t count, const std::string& what) {
+    if (count > left() / sizeof(T)) fail("cut short in " + what);
+    std::vector<T> values(count);
+    bytes(values.data(), count * sizeof(T), what);
+    return values;
+  }
+
+ private:
+  std::string path_;
+  std::ifstream in_;
+  uint64_t size_ = 0, offset_ = 0;
+};
+
+bool finiteNonNegative(double x) { return std::isfinite(x) && x >= 0; }
+
+// j[key] as a T: a JSON integer in T's range. (json::get<T> would cast a fraction or a number
+// past T's range, which for a float is undefined behaviour.)
+template <typename T>
+T integerAt(const nlohmann::json& j, const char* key, const Reader& reader) {
+  const nlohmann::json& v = j.at(key);
+  bool ok = false;
+  if (v.is_number_unsigned()) {
+    ok = v.get<uint64_t>() <= static_cast<uint64_t>(std::numeric_limits<T>::max());
+  } else if (v.is_number_integer()) {
+    const auto s = v.get<int64_t>();
+    ok = s >= 0 ? static_cast<uint64_t>(s) <= static_cast<uint64_t>(std::numeric_limits<T>::max())
+                : std::is_signed_v<T> && s >= static_cast<int64_t>(std::numeric_limits<T>::min());
+  }
+  if (!ok)
+    reader.fail(std::string("the header's \"") + key +
+                "\" is not an integer in range: " + v.dump());
+  return v.is_number_unsigned() ? static_cast<T>(v.get<uint64_t>())
+                                : static_cast<T>(v.get<int64_t>());
+}
+
+nlohmann::json optionsJson(const SolveOptions& o) {
+  return {{"max_area", o.maxArea},
+          {"element_size", o.elementSize},
+          {"elements", o.targetElements},
+          {"two_sided", o.twoSided.all},
+          {"two_sided_materials", o.twoSided.materials},
+          {"rays", o.raysPerElement},
+          {"seed", o.seed},
+          {"solver", solverKindName(o.solver)},
+          {"tolerance", o.tolerance},
+          {"max_iterations", o.maxIterations}};
+}
+
+SolveOptions optionsFromJson(const nlohmann::json& j, const Reader& reader) {
+  SolveOptions o;
+  try {
+    o.maxArea = j.at("max_area").get<double>();
+    o.elementSize = j.at("element_size").get<double>();
+    o.targetElements = integerAt<int>(j, "elements", reader);
+    o.twoSided.all = j.at("two_sided").get<bool>();
+    o.twoSided.materials = j.at("two_sided_materials").get<std::vector<std::string>>();
+    o.raysPerElement = integerAt<int>(j, "rays", reader);
+    o.seed = integerAt<uint64_t>(j, "seed", reader);
+    o.solver = parseSolverKind(j.at("solver").get<std::string>());
+    o.tolerance = j.at("tolerance").get<double>();
+    o.maxIterations = integerAt<int>(j, "max_iterations", reader);
+  } catch (const nlohmann::json::exception& e) {
+    reader.fail(std::string("the header's options are incomplete: ") + e.what());
+  } catch (const InputError& e) {
+    if (!e.file().empty()) throw;  // integerAt's, naming the file already
+    reader.fail(std::string("the header's options are not valid: ") + e.what());  // the solver
+  }
+  o.keepFactors = true;
+  try {
+    validateSolveOptions(o);
+  } catch (const InputError& e) {
+    reader.fail(std::string("the header's options are not valid: ") + e.what());
+  }
+  return o;
+}
+
+}  // namespace
+
+std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& o) {
+  Fingerprint f;
+  f.add(std::string(kMagic));
+  f.add(scene.positions.size());
+  for (const Eigen::Vector3d& p : scene.positions)
+    for (int k = 0; k < 3; ++k) f.add(p[k]);
+  f.add(scene.polygons.size());
+  for (const ScenePolygon& poly : scene.polygons) {
+    f.add(poly.material);
+    f.add(poly.backSideOf);
+    f.add(poly.vertices.size());
+    for (int v : poly.vertices) f.add(v);
+    f.add(poly.uvs.size());
+    for (const Eigen::Vector2d& uv : poly.uvs) {
+      f.add(uv.x());
+      f.add(uv.y());
+    }
+  }
+  f.add(scene.materials.size());
+  for (const Material& m : scene.materials) {
+    f.add(m.name);
+    f.add(static_cast<int>(m.kind));
+    f.add(m.specular);
+    f.add(m.transmittance);
+    f.add(m.ior);
+    f.add(m.twoSided);
+    f.add(m.alphaTexture);
+    f.add(m.alphaFromDiffuse);
+    f.add(m.alphaCutoff);
+    f.add(m.diffuseTexture);
+    f.add(m.emissionTexture);
+    // A cut-out's mask decides which rays pass: its texture's alpha is geometry here.
+    const int mask = m.alphaTexture >= 0  ? m.alphaTexture
+                     : m.alphaFromDiffuse ? m.diffuseTexture
+                                          : -1;
+    if (mask >= 0 && mask < static_cast<int>(scene.textures.size())) {
+      const Texture& t = scene.textures[static_cast<size_t>(mask)];
+      f.add(t.width);
+      f.add(t.height);
+      for (size_t i = 0; i < t.rgba.size(); ++i) f.add(t.rgba[i]);
+    }
+  }
+  f.add(o.raysPerElement);
+  f.add(o.maxArea);
+  f.add(o.targetElements);
+  f.add(o.elementSize);
+  f.add(o.seed);
+  f.add(o.twoSided.all);
+  for (const std::string& m : o.twoSided.materials) f.add(m);
+  return f.hex();
+}
+
+std::vector<int> keptRayMultipliers(const std::vector<double>& area,
+                                    const std::vector<std::vector<Rgb>>& sourcePower) {
+  const size_t n = area.size();
+  std::vector<int> multiplier(n, 1);
+  for (const std::vector<Rgb>& source : sourcePower) {
+    double total = 0;
+    for (size_t i = 0; i < n; ++i) total += area[i] * source[i].sum();
+    if (!(total > 0)) continue;
+    for (size_t i = 0; i < n; ++i) {
+      const double share = area[i] * source[i].sum() / total;
+      multiplier[i] =
+          std::max(multiplier[i], static_cast<int>(std::clamp(std::round(share * n), 1.0, 64.0)));
+    }
+  }
+  return multiplier;
+}
+
+void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
+  const size_t n = kept.area.size();
+  nlohmann::json lights = nlohmann::json::array();
+  for (size_t l = 0; l < kept.lightGroups.size(); ++l)
+    lights.push_back({{"type", kept.lightTypes[l]}, {"group", kept.lightGroups[l]}});
+  const std::string header = nlohmann::json{{"scene", kept.scenePath},
+                                            {"fingerprint", kept.fingerprint},
+                                            {"elements", n},
+                                            {"lights", lights},
+                                            {"options", optionsJson(kept.options)}}
+                                 .dump();
+  out.write(kMagic, static_cast<std::streamsize>(std::strlen(kMagic)));
+  put(out, static_cast<uint64_t>(header.size()));
+  out.write(header.data(), static_cast<std::streamsize>(header.size()));
+  putArray(out, kept.area);
+  for (const std::vector<Rgb>& irradiance : kept.lightIrradiance) {
+    std::vector<double> values;
+    for (const Rgb& e : irradiance) values.insert(values.end(), {e.r, e.g, e.b});
+    putArray(out, values);
+  }
+  std::vector<float> values, tinted;
+  for (const FormFactorRow& row : kept.rows) {
+    put(out, static_cast<uint32_t>(row.targets.size()));
+    put(out, static_cast<uint8_t>(!row.tinted.empty()));
+    put(out, row.escaped);
+    putArray(out, row.targets);
+    values.assign(row.values.begin(), row.values.end());
+    putArray(out, values);
+    if (row.tinted.empty()) continue;
+    tinted.clear();
+    for (const Rgb& t : row.tinted)
+      tinted.insert(tinted.end(),
+                    {static_cast<float>(t.r), static_cast<float>(t.g), static_cast<float>(t.b)});
+    putArray(out, tinted);
+  }
+}
+
+KeptFactors readKeptFactors(const std::string& path) {
+  Reader reader(path);
+  std::string magic(std::strlen(kMagic), '\0');
+  reader.bytes(magic.data(), magic.size(), "the first line");
+  if (magic != kMagic)
+    reader.fail("not a kept form factors file (it starts with \"radiosity kept factors 1\")");
+  const auto headerBytes = reader.get<uint64_t>("the header's length");
+  if (headerBytes > kMaxHeaderBytes || headerBytes > reader.left())
+    reader.fail("the header's length " + std::to_string(headerBytes) + " is past the file's end");
+  std::string text(headerBytes, '\0');
+  reader.bytes(text.data(), headerBytes, "the header");
+  KeptFactors kept;
+  uint64_t n = 0;
+  try {
+    const nlohmann::json header = nlohmann::json::parse(text);
+    kept.scenePath = header.at("scene").get<std::string>();
+    kept.fingerprint = header.at("fingerprint").get<std::string>();
+    n = integerAt<uint64_t>(header, "elements", reader);
+    for (const nlohmann::json& light : header.at("lights")) {
+      kept.lightTypes.push_back(light.at("type").get<std::string>());
+      kept.lightGroups.push_back(light.at("group").get<std::string>());
+    }
+    kept.options = optionsFromJson(header.at("options"), reader);
+  } catch (const nlohmann::json::exception& e) {
+    reader.fail(std::string("the header is not the expected JSON: ") + e.what());
+  }
+  if (n > static_cast<uint64_t>(kMaxElements))
+    reader.fail(std::to_string(n) + " elements: more than a solve makes (" +
+                std::to_string(static_cast<uint64_t>(kMaxElements)) + ")");
+  kept.options.scenePath = kept.scenePath;
+  kept.area = reader.array<double>(n, "the areas");
+  for (double a : kept.area)
+    if (!finiteNonNegative(a)) reader.fail("an element's area is negative or not finite");
+  for (size_t l = 0; l < kept.lightGroups.size(); ++l) {
+    const std::vector<double> values =
+        reader.array<double>(3 * n, "light " + std::to_string(l) + "'s irradiance");
+    std::vector<Rgb>& irradiance = kept.lightIrradiance.emplace_back(n);
+    for (size_t i = 0; i < n; ++i) {
+      irradiance[i] = {values[3 * i], values[3 * i + 1], values[3 * i + 2]};
+      if (!irradiance[i].isFinite() || irradiance[i].minComponent() < 0)
+        reader.fail("light " + std::to_string(l) + "'s irradiance is negative or not finite");
+    }
+  }
+  // Each row takes at least 13 bytes: the header's count allocates no more rows than the file
+  // holds.
+  if (n > reader.left() / 13) reader.fail("cut short in the rows");
+  kept.rows.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const std::string what = "row " + std::to_string(i);
+    FormFactorRow& row = kept.rows[i];
+    const auto count = reader.get<uint32_t>(what);
+    const auto tinted = reader.get<uint8_t>(what);
+    row.escaped = reader.get<double>(what);
+    if (count > n || tinted > 1 || !finiteNonNegative(row.escaped))
+      reader.fail(what + ": not a form-factor row (" + std::to_string(count) + " targets)");
+    row.targets = reader.array<int32_t>(count, what);
+    const std::vector<float> values = reader.array<float>(count, what);
+    row.values.assign(values.begin(), values.end());
+    for (uint32_t k = 0; k < count; ++k)
+      if (row.targets[k] < 0 || static_cast<uint64_t>(row.targets[k]) >= n ||
+          (k > 0 && row.targets[k] <= row.targets[k - 1]) || !finiteNonNegative(row.values[k]))
+        reader.fail(what + ": targets must be increasing element indices and factors finite, >= 0");
+    if (row.sum() > 1 + 1e-4) reader.fail(what + ": its factors sum past 1");
+    if (!tinted) continue;
+    const std::vector<float> t = reader.array<float>(3 * static_cast<uint64_t>(count), what);
+    for (uint32_t k = 0; k < count; ++k) {
+      row.tinted.push_back({t[3 * k], t[3 * k + 1], t[3 * k + 2]});
+      if (!row.tinted.back().isFinite() || row.tinted.back().minComponent() < 0)
+        reader.fail(what + ": tinted factors must be finite, >= 0");
+    }
+  }
+  if (reader.left() != 0)
+    reader.fail(std::to_string(reader.left()) + " bytes after the last row: not one kept solve");
+  return kept;
+}
+
+}  // namespace rad

@@ -1,0 +1,121 @@
+#include "radiosity/pipeline/relight.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <chrono>
+
+#include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
+#include "radiosity/pipeline/iteration.h"
+#include "radiosity/pipeline/mesh_stage.h"
+#include "radiosity/pipeline/problem_setup.h"
+#include "radiosity/scene/scene_loader.h"
+#include "radiosity/scene/two_sided.h"
+#include "radiosity/solvers/progressive_solver.h"
+#include "radiosity/solvers/solver_factory.h"
+
+namespace rad {
+namespace {
+
+// F as the gathering solvers read it, from the kept rows (FormFactorCache::matrix's rule).
+Eigen::SparseMatrix<double, Eigen::RowMajor> keptMatrix(const KeptFactors& kept) {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (size_t i = 0; i < kept.rows.size(); ++i) {
+    const FormFactorRow& row = kept.rows[i];
+    if (!row.tinted.empty())
+      throw InputError(
+          "form factors through mirrors or glass are tinted per channel; the gathering solvers "
+          "use one matrix for all channels: use --solver progressive for this scene");
+    for (size_t k = 0; k < row.targets.size(); ++k)
+      entries.emplace_back(static_cast<int>(i), row.targets[k], row.values[k]);
+  }
+  const int n = static_cast<int>(kept.rows.size());
+  Eigen::SparseMatrix<double, Eigen::RowMajor> f(n, n);
+  f.setFromTriplets(entries.begin(), entries.end());
+  return f;
+}
+
+}  // namespace
+
+Scene loadKeptScene(const KeptFactors& kept) {
+  Scene scene = loadScene(kept.scenePath);
+  scene.lights.clear();
+  applyTwoSidedInput(scene, kept.options.twoSided);
+  addBackSides(scene);
+  return scene;
+}
+
+SolveResult relightScene(const KeptFactors& kept, const std::string& keptPath, Scene scene,
+                         const std::vector<Rgb>& lightScale, const SolveOptions& solverOptions) {
+  RAD_CHECK_EQ(lightScale.size(), kept.lightIrradiance.size());
+  const auto start = std::chrono::steady_clock::now();
+  SolveOptions options = kept.options;
+  options.solver = solverOptions.solver;
+  options.tolerance = solverOptions.tolerance;
+  options.maxIterations = solverOptions.maxIterations;
+  options.threads = solverOptions.threads;
+  options.timeLimit = solverOptions.timeLimit;
+  options.outputDir = solverOptions.outputDir;
+  validateSolveOptions(options);
+  if (keptFactorsFingerprint(scene, kept.options) != kept.fingerprint)
+    throw InputError(keptPath, 0,
+                     "the scene " + kept.scenePath +
+                         " changed since `solve --keep-factors` (its geometry, UVs, cut-outs, "
+                         "mirrors or glass, or the mesh options): relight reuses rays that no "
+                         "longer fit it; solve again");
+  SolveResult result;
+  Solution& solution = result.solution;
+  SolveReport& report = result.report;
+  report.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
+                                        static_cast<size_t>(report.threads));
+  solution.scene = std::move(scene);
+  MeshedScene meshed = meshScene(solution.scene, options);
+  solution.mesh = std::move(meshed.mesh);
+  report.maxArea = meshed.maxArea;
+  report.elementSize = meshed.sizing.edge;
+  report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
+  const int n = solution.mesh->elementCount();
+  if (n != static_cast<int>(kept.area.size()))
+    throw InputError(keptPath, 0,
+                     "the scene meshes into " + std::to_string(n) +
+                         " elements, the kept factors hold " + std::to_string(kept.area.size()) +
+                         ": solve again");
+  report.elementsBeforeRefinement = n;
+
+  // E and ρ from the materials as they are now; the lights' first shot from the kept E_d.
+  solution.problem = makeProblem(solution.scene, *solution.mesh, nullptr);
+  solution.problem.area = kept.area;
+  for (size_t l = 0; l < kept.lightIrradiance.size(); ++l)
+    for (int e = 0; e < n; ++e)
+      solution.problem.emission[e] +=
+          solution.problem.reflectance[e] * lightScale[l] * kept.lightIrradiance[l][e];
+  if (!(solution.problem.emittedPower() > 0))
+    throw InputError(keptPath, 0, "nothing emits after the overrides: no light to solve for");
+
+  KeptRows rows(kept);
+  const std::unique_ptr<Solver> solver =
+      makeSolver(options.solver, solution.problem, rows, [&] { return keptMatrix(kept); });
+  const IterationLimits limits = iterationLimits(options, n, start);
+  report.stoppedBy = iterate(*solver, limits);
+  report.converged = converged(report.stoppedBy);
+  solution.radiosity = solver->solution();
+  if (const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver.get()))
+    solution.unshot = shooting->unshotPowerOfElements();
+  report.solverName = solver->name();
+  report.progressMeasure = solver->progressMeasure();
+  report.iterations = solver->iterations();
+  report.finalProgress = solver->progress();
+  report.shooters = n;
+  report.relitFrom = keptPath;
+  report.skip("form factors and the lights' first shot",
+              "relight: reused from " + keptPath + ", no ray cast");
+  report.times.total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.times.solve = report.times.total;
+  return result;
+}
+
+}  // namespace rad

@@ -1,0 +1,135 @@
+// `radiosity solve --keep-factors` then `radiosity relight DIR --override FILE`, end to end: the
+// outputs rewritten with no ray cast, the same answer as solving the changed scene, and bad input
+// (a wrong override, no kept factors, a scene that changed) refused with the old outputs intact.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "tests/support/run_command.h"
+
+namespace rad {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::runRadiosity;
+using testing::scratchPath;
+
+const std::string kData = RADIOSITY_DATA_DIR;
+
+std::string readText(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A copy of the Cornell box (OBJ + MTL) in `dir`, its red wall's Kd replaced when `red` is given.
+fs::path copyCornell(const fs::path& dir, const std::string& red = "") {
+  fs::create_directories(dir);
+  fs::copy_file(kData + "/cornell_box/cornell_box.obj", dir / "cornell_box.obj");
+  std::string mtl = readText(kData + "/cornell_box/cornell_box.mtl");
+  if (!red.empty()) {
+    const size_t at = mtl.find("Kd", mtl.find("newmtl red"));
+    mtl.replace(at, mtl.find('\n', at) - at, "Kd " + red);
+  }
+  std::ofstream(dir / "cornell_box.mtl") << mtl;
+  return dir / "cornell_box.obj";
+}
+
+std::vector<double> radiosityColumn(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<double> values;
+  while (std::getline(in, line)) {
+    std::stringstream fields(line);
+    std::string field;
+    std::vector<std::string> f;
+    while (std::getline(fields, field, ',')) f.push_back(field);
+    for (size_t k = f.size() - 3; k < f.size(); ++k) values.push_back(std::stod(f[k]));
+  }
+  return values;
+}
+
+const std::string kSolveOptions = " --elements 200 --rays 64 --tolerance 1e-9 --quiet";
+
+TEST(CliRelight, MatchesASolveOfTheChangedSceneAndCastsNoRay) {
+  const fs::path root = scratchPath("relight");
+  const fs::path scene = copyCornell(root / "scene");
+  const fs::path kept = root / "kept";
+  ASSERT_EQ(runRadiosity("solve " + scene.string() + " --out " + kept.string() + " --keep-factors" +
+                         kSolveOptions)
+                .exitCode,
+            0);
+  ASSERT_TRUE(fs::exists(kept / "factors.bin"));
+  std::ofstream(root / "over.json") << R"({"materials": {"red": {"diffuse": [0.1, 0.2, 0.6]}}})";
+  const auto r = runRadiosity("relight " + kept.string() + " --override " +
+                              (root / "over.json").string() + " --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  const auto summary = nlohmann::json::parse(readText(kept / "summary.json"));
+  EXPECT_EQ(summary["relight"]["rays_cast"].get<long>(), 0);
+
+  // The same change made in the MTL and solved afresh.
+  const fs::path changed = copyCornell(root / "changed", "0.1 0.2 0.6");
+  const fs::path fresh = root / "fresh";
+  ASSERT_EQ(runRadiosity("solve " + changed.string() + " --out " + fresh.string() +
+                         " --keep-factors" + kSolveOptions)
+                .exitCode,
+            0);
+  const std::vector<double> a = radiosityColumn(fresh / "elements.csv");
+  const std::vector<double> b = radiosityColumn(kept / "elements.csv");
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_FALSE(a.empty());
+  double peak = 0;
+  for (double v : a) peak = std::max(peak, v);
+  for (size_t i = 0; i < a.size(); ++i) ASSERT_NEAR(b[i], a[i], 1e-5 * peak) << i;
+  fs::remove_all(root);
+}
+
+TEST(CliRelight, BadInputFailsAndLeavesTheOutputsAsTheyWere) {
+  const fs::path root = scratchPath("relight_bad");
+  const fs::path scene = copyCornell(root / "scene");
+  const fs::path kept = root / "kept";
+  ASSERT_EQ(runRadiosity("solve " + scene.string() + " --out " + kept.string() + " --keep-factors" +
+                         kSolveOptions)
+                .exitCode,
+            0);
+  const std::string before = readText(kept / "elements.csv");
+  // An unknown material: the override file's line and pointer.
+  std::ofstream(root / "over.json")
+      << "{\"materials\": {\n  \"purple\": {\"diffuse\": [1, 0, 1]}}}";
+  auto r =
+      runRadiosity("relight " + kept.string() + " --override " + (root / "over.json").string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("over.json:2"), std::string::npos) << r.stderrText;
+  EXPECT_NE(r.stderrText.find("/materials/purple"), std::string::npos) << r.stderrText;
+  // A light index the kept solve does not have (the box has no lights).
+  std::ofstream(root / "over.json") << R"({"lights": {"0": {"scale": 2}}})";
+  r = runRadiosity("relight " + kept.string() + " --override " + (root / "over.json").string());
+  EXPECT_EQ(r.exitCode, 1);
+  // The scene moved since the solve.
+  std::string obj = readText(scene);
+  obj.replace(obj.find("\nv ") + 3, 1, "0.01 ");
+  std::ofstream(scene) << obj;
+  r = runRadiosity("relight " + kept.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("changed since"), std::string::npos) << r.stderrText;
+  EXPECT_EQ(readText(kept / "elements.csv"), before);
+  // A directory without kept factors.
+  r = runRadiosity("relight " + root.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("--keep-factors"), std::string::npos) << r.stderrText;
+  // Options --keep-factors cannot keep.
+  r = runRadiosity("solve " + scene.string() + " --out " + (root / "x").string() +
+                   " --keep-factors --form-factors analytic");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_FALSE(fs::exists(root / "x"));
+  fs::remove_all(root);
+}
+
+}  // namespace
+}  // namespace rad
