@@ -2,6 +2,7 @@
 // again with other material colours, emission or light strengths, from its kept form factors and
 // first shot: no ray is cast. The outputs (elements.csv, vertex_colors.ply, summary.json, …) are
 // rewritten in DIR, or written to --out.
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -17,6 +18,10 @@
 
 namespace rad {
 namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
 
 struct RelightOptions {
   std::string dir;
@@ -34,8 +39,13 @@ void runRelight(const RelightOptions& o) {
     throw InputError(o.dir, 0,
                      "no kept form factors (" + std::string(kKeptFactorsFile) +
                          ") here: solve with --keep-factors --out " + o.dir + " first");
+  auto t = std::chrono::steady_clock::now();
   const KeptFactors kept = readKeptFactors(keptPath);
+  logInfo("read " + keptPath + ": " + std::to_string(kept.rows.size()) + " rows in " +
+          formatNumber(secondsSince(t)) + " s");
+  t = std::chrono::steady_clock::now();
   Scene scene = loadKeptScene(kept);
+  logInfo("scene loaded in " + formatNumber(secondsSince(t)) + " s");
   std::vector<Rgb> lightScale(kept.lightIrradiance.size(), Rgb::all(1));
   if (!o.overrideFile.empty()) {
     std::vector<std::string> materialNames;
@@ -89,7 +99,9 @@ void registerRelightCommand(CLI::App& app, CommandAction& run) {
       ->check(CLI::ExistingFile);
   relight->add_option("--out", o->outputDir, "Write the outputs here instead of into DIR");
   relight->add_option("--solver", o->solverName,
-                      "Solver (default: the kept solve's): " + solverKindNames());
+                      "Solver (default: the kept solve's, so an unchanged scene gives its answer "
+                      "back; gauss-seidel is fastest over kept rows): " +
+                          solverKindNames());
   relight->add_option("--tolerance", o->tolerance,
                       "Relative tolerance (default: the kept solve's)");
   relight->add_option("--max-iterations", o->maxIterations, "Iteration budget (0: the default)");

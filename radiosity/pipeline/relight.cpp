@@ -21,19 +21,28 @@ namespace {
 
 // F as the gathering solvers read it, from the kept rows (FormFactorCache::matrix's rule).
 Eigen::SparseMatrix<double, Eigen::RowMajor> keptMatrix(const KeptFactors& kept) {
-  std::vector<Eigen::Triplet<double>> entries;
-  for (size_t i = 0; i < kept.rows.size(); ++i) {
-    const FormFactorRow& row = kept.rows[i];
+  const int n = static_cast<int>(kept.rows.size());
+  size_t entries = 0;
+  for (const FormFactorRow& row : kept.rows) {
     if (!row.tinted.empty())
       throw InputError(
           "form factors through mirrors or glass are tinted per channel; the gathering solvers "
           "use one matrix for all channels: use --solver progressive for this scene");
-    for (size_t k = 0; k < row.targets.size(); ++k)
-      entries.emplace_back(static_cast<int>(i), row.targets[k], row.values[k]);
+    entries += row.targets.size();
   }
-  const int n = static_cast<int>(kept.rows.size());
+  // Compressed row storage written directly: the rows are sorted by target already.
   Eigen::SparseMatrix<double, Eigen::RowMajor> f(n, n);
-  f.setFromTriplets(entries.begin(), entries.end());
+  f.resizeNonZeros(static_cast<Eigen::Index>(entries));
+  size_t at = 0;
+  for (int i = 0; i < n; ++i) {
+    f.outerIndexPtr()[i] = static_cast<int>(at);
+    const FormFactorRow& row = kept.rows[static_cast<size_t>(i)];
+    for (size_t k = 0; k < row.targets.size(); ++k, ++at) {
+      f.innerIndexPtr()[at] = row.targets[k];
+      f.valuePtr()[at] = row.values[k];
+    }
+  }
+  f.outerIndexPtr()[n] = static_cast<int>(at);
   return f;
 }
 
@@ -84,6 +93,10 @@ SolveResult relightScene(const KeptFactors& kept, const std::string& keptPath, S
                          " elements, the kept factors hold " + std::to_string(kept.area.size()) +
                          ": solve again");
   report.elementsBeforeRefinement = n;
+  logInfo("mesh: " + std::to_string(n) + " elements in " +
+          formatNumber(
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
+          " s");
 
   // E and ρ from the materials as they are now; the lights' first shot from the kept E_d.
   solution.problem = makeProblem(solution.scene, *solution.mesh, nullptr);

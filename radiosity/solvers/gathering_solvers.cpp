@@ -26,8 +26,9 @@ double relativeResidual(const RadiosityProblem& problem, const SparseRows& f,
   return relativeToEmission(problem, r);
 }
 
-GatheringSolver::GatheringSolver(const RadiosityProblem& problem, SparseRows formFactors)
-    : problem_(problem), f_(std::move(formFactors)), solution_(problem.emission) {
+GatheringSolver::GatheringSolver(const RadiosityProblem& problem, SparseRows&& formFactors)
+    : problem_(problem), solution_(problem.emission) {
+  f_.swap(formFactors);
   residual_ = relativeResidual(problem_, f_, solution_);
 }
 

@@ -67,26 +67,31 @@ TEST(CliRelight, MatchesASolveOfTheChangedSceneAndCastsNoRay) {
             0);
   ASSERT_TRUE(fs::exists(kept / "factors.bin"));
   std::ofstream(root / "over.json") << R"({"materials": {"red": {"diffuse": [0.1, 0.2, 0.6]}}})";
-  const auto r = runRadiosity("relight " + kept.string() + " --override " +
-                              (root / "over.json").string() + " --quiet");
-  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
-  const auto summary = nlohmann::json::parse(readText(kept / "summary.json"));
-  EXPECT_EQ(summary["relight"]["rays_cast"].get<long>(), 0);
-
-  // The same change made in the MTL and solved afresh.
+  // The same change made in the MTL and solved afresh, by the kept solve's solver (progressive,
+  // relight's default) and by Gauss–Seidel (relight --solver gauss-seidel): each pair equal to
+  // the tolerance, since the rows are the same rays.
   const fs::path changed = copyCornell(root / "changed", "0.1 0.2 0.6");
-  const fs::path fresh = root / "fresh";
-  ASSERT_EQ(runRadiosity("solve " + changed.string() + " --out " + fresh.string() +
-                         " --keep-factors" + kSolveOptions)
-                .exitCode,
-            0);
-  const std::vector<double> a = radiosityColumn(fresh / "elements.csv");
-  const std::vector<double> b = radiosityColumn(kept / "elements.csv");
-  ASSERT_EQ(a.size(), b.size());
-  ASSERT_FALSE(a.empty());
-  double peak = 0;
-  for (double v : a) peak = std::max(peak, v);
-  for (size_t i = 0; i < a.size(); ++i) ASSERT_NEAR(b[i], a[i], 1e-5 * peak) << i;
+  for (const std::string solver : {"", " --solver gauss-seidel"}) {
+    const fs::path relit = root / ("relit" + std::to_string(solver.size()));
+    const auto r =
+        runRadiosity("relight " + kept.string() + " --override " + (root / "over.json").string() +
+                     " --out " + relit.string() + solver + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    const auto summary = nlohmann::json::parse(readText(relit / "summary.json"));
+    EXPECT_EQ(summary["relight"]["rays_cast"].get<long>(), 0);
+    const fs::path fresh = root / ("fresh" + std::to_string(solver.size()));
+    ASSERT_EQ(runRadiosity("solve " + changed.string() + " --out " + fresh.string() +
+                           " --keep-factors" + kSolveOptions + solver)
+                  .exitCode,
+              0);
+    const std::vector<double> a = radiosityColumn(fresh / "elements.csv");
+    const std::vector<double> b = radiosityColumn(relit / "elements.csv");
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_FALSE(a.empty());
+    double peak = 0;
+    for (double v : a) peak = std::max(peak, v);
+    for (size_t i = 0; i < a.size(); ++i) ASSERT_NEAR(b[i], a[i], 1e-5 * peak) << solver << i;
+  }
   fs::remove_all(root);
 }
 

@@ -72,14 +72,14 @@ TEST_F(CornellDirect, DirectSolveHasZeroResidual) {
 
 TEST_F(CornellDirect, GaussSeidelAgrees) {
   const double tolerance = 1e-6;
-  GaussSeidelSolver solver(*problem_, *f_);
+  GaussSeidelSolver solver(*problem_, SparseRows(*f_));
   run(solver, tolerance);
   EXPECT_LT(relativeDifference(solver.solution()), tolerance / (1 - maxReflectance()));
 }
 
 TEST_F(CornellDirect, JacobiAgrees) {
   const double tolerance = 1e-6;
-  JacobiSolver solver(*problem_, *f_);
+  JacobiSolver solver(*problem_, SparseRows(*f_));
   run(solver, tolerance);
   EXPECT_LT(relativeDifference(solver.solution()), tolerance / (1 - maxReflectance()));
 }

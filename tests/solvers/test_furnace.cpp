@@ -53,9 +53,9 @@ TEST_P(FurnaceTest, ConvergesToEOverOneMinusRho) {
     tolerance = 1e-5;  // missing radiosity = rho × unshot fraction (relative)
   } else {
     if (solverName == "jacobi")
-      solver = std::make_unique<JacobiSolver>(furnace.problem, f);
+      solver = std::make_unique<JacobiSolver>(furnace.problem, SparseRows(f));
     else
-      solver = std::make_unique<GaussSeidelSolver>(furnace.problem, f);
+      solver = std::make_unique<GaussSeidelSolver>(furnace.problem, SparseRows(f));
     tolerance = 1e-5 * (1 - rho);  // error <= residual / (1 − rho)
   }
   const int budget = 5000000;
