@@ -1,5 +1,9 @@
 // `radiosity solve SCENE.obj --out DIR`: the diffuse radiosity solution and its files.
+#include <chrono>
+#include <cmath>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "radiosity/app/commands.h"
@@ -8,7 +12,10 @@
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "radiosity/pipeline/solve_pipeline.h"
+#include "radiosity/render/light_probes.h"
+#include "radiosity/render/render_scene.h"
 #include "radiosity/scene/lights.h"
+#include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
 
@@ -155,6 +162,44 @@ void finishSolveOptions(const CLI::App& command, SolveOptions& options,
   checkOptionsApply(options, given);
 }
 
+namespace {
+
+// `solve --probes`: light probes on a grid over the solved mesh's bounding box.
+struct ProbeOptions {
+  std::optional<double> spacing;
+  int rays = 1024;
+};
+
+void validateProbeOptions(const ProbeOptions& o) {
+  if (!o.spacing) return;
+  if (!(*o.spacing > 0) || !std::isfinite(*o.spacing))
+    throw InputError("--probes must be a positive number of scene units");
+  if (o.rays < 1) throw InputError("--probe-rays must be at least 1");
+}
+
+std::vector<ProbeSh> solveProbes(const SolveOptions& options, const ProbeOptions& o,
+                                 const SolveResult& result) {
+  const auto start = std::chrono::steady_clock::now();
+  const Solution& solution = result.solution;
+  const PatchMesh& mesh = *solution.mesh;
+  const RayCaster caster(mesh, solution.scene);
+  const RenderScene view(solution.scene, mesh, caster);
+  const std::vector<Eigen::Vector3d> points =
+      probeGrid(mesh.boundsMin(), mesh.boundsMax(), *o.spacing);
+  std::vector<ProbeSh> probes =
+      computeProbes(view, solution.radiosity, points, o.rays, options.seed);
+  int inside = 0;
+  for (const ProbeSh& p : probes) inside += p.inside;
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  logInfo("light probes: " + std::to_string(probes.size()) + " (" + std::to_string(inside) +
+          " inside geometry), " + std::to_string(o.rays) + " rays each, " + formatNumber(seconds) +
+          " s");
+  return probes;
+}
+
+}  // namespace
+
 void registerSolveCommand(CLI::App& app, CommandAction& run) {
   auto options = std::make_shared<SolveOptions>();
   auto solverName = std::make_shared<std::string>("progressive");
@@ -168,16 +213,34 @@ void registerSolveCommand(CLI::App& app, CommandAction& run) {
                   "Keep the form factors, exposed areas and each light's first shot in "
                   "factors.bin, so `radiosity relight` can change colours and light strengths "
                   "without casting a ray (hemisphere rows, uniform mesh)");
+  auto probes = std::make_shared<ProbeOptions>();
+  solve->add_option("--probes", probes->spacing,
+                    "Light probes (order-2 SH of the incident radiance) on a grid of this spacing "
+                    "in scene units over the mesh's bounding box: probes.json and probes.bin "
+                    "(docs/rendering.md)");
+  solve->add_option("--probe-rays", probes->rays, "Rays per light probe")
+      ->default_val(probes->rays);
   addCommonFlags(*solve);
-  solve->callback([&run, solve, options, solverName] {
-    run = [solve, options, solverName] {
+  solve->callback([&run, solve, options, solverName, probes] {
+    run = [solve, options, solverName, probes] {
+      validateProbeOptions(*probes);
+      if (!probes->spacing && solve->count("--probe-rays") > 0)
+        throw InputError("--probe-rays is not used: light probes are off without --probes SPACING");
       finishSolveOptions(*solve, *options, *solverName);
       SolveResult result = runSolve(*options);
       throwIfInterrupted();
+      std::vector<ProbeSh> probeSh;
+      if (probes->spacing) {
+        probeSh = solveProbes(*options, *probes, result);
+        throwIfInterrupted();
+      }
       {
         // The files are written and renamed as a set; a signal now waits for it to finish.
         OutputSection writing;
-        writeSolveOutputs(*options, result);
+        if (probes->spacing)
+          writeSolveOutputs(*options, result, probeSh);
+        else
+          writeSolveOutputs(*options, result);
       }
       clearInterrupt();  // a signal that came while writing came too late: the run completed
     };

@@ -134,7 +134,7 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
 
 // Writes the three files under temporary names, then renames them all.
 void writeFiles(const SolveOptions& options, SolveResult& result,
-                std::chrono::steady_clock::time_point start) {
+                std::chrono::steady_clock::time_point start, const std::vector<ProbeSh>* probes) {
   const std::filesystem::path dir(options.outputDir);
   const Solution& solution = result.solution;
   const PatchMesh& mesh = *solution.mesh;
@@ -172,6 +172,17 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
     files.push_back(factors.get());
   }
 
+  // The light probes of `solve --probes`.
+  std::unique_ptr<AtomicFile> probesJson, probesBin;
+  if (probes) {
+    probesJson = std::make_unique<AtomicFile>((dir / "probes.json").string());
+    writeProbesJson(probesJson->stream(), *probes);
+    probesBin = std::make_unique<AtomicFile>((dir / "probes.bin").string(), /*binary=*/true);
+    writeProbesBinary(probesBin->stream(), *probes);
+    files.push_back(probesJson.get());
+    files.push_back(probesBin.get());
+  }
+
   result.report.times.output =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.report.times.total += result.report.times.output;
@@ -183,13 +194,12 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   commitAll(files);
 }
 
-}  // namespace
-
-void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
+void writeOutputs(const SolveOptions& options, SolveResult& result,
+                  const std::vector<ProbeSh>* probes) {
   const auto start = std::chrono::steady_clock::now();
   const bool createdDirectory = ensureDirectory(options.outputDir);
   try {
-    writeFiles(options, result, start);
+    writeFiles(options, result, start, probes);
   } catch (...) {
     // Nothing of this run may remain: not a file, not the directory it made.
     if (createdDirectory) {
@@ -201,7 +211,19 @@ void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
   logInfo("wrote the solution files (elements.csv, vertex_colors.ply, summary.json" +
           std::string(solutionIsReusable(options) ? ", solution.json" : "") +
           std::string(result.kept ? ", factors.bin" : "") +
-          std::string(kWritesVtp ? ", solution.vtp" : "") + ") to " + options.outputDir);
+          std::string(kWritesVtp ? ", solution.vtp" : "") +
+          std::string(probes ? ", probes.json, probes.bin" : "") + ") to " + options.outputDir);
+}
+
+}  // namespace
+
+void writeSolveOutputs(const SolveOptions& options, SolveResult& result) {
+  writeOutputs(options, result, nullptr);
+}
+
+void writeSolveOutputs(const SolveOptions& options, SolveResult& result,
+                       const std::vector<ProbeSh>& probes) {
+  writeOutputs(options, result, &probes);
 }
 
 }  // namespace rad

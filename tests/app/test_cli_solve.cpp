@@ -118,5 +118,37 @@ TEST(CliSolve, JacobiBouncesInTheFurnaceBox) {
   std::filesystem::remove_all(out);
 }
 
+// `solve --probes`: a grid of light probes over the box's bounds, in probes.json and probes.bin.
+TEST(CliSolve, ProbesOnTheCornellBoxGrid) {
+  const auto out = testing::scratchPath("cornell_probes");
+  const auto r = testing::runRadiosity("solve " + kData + "/cornell_box/cornell_box.obj --out " +
+                                       out.string() +
+                                       " --elements 200 --rays 64 --probes 0.2 --probe-rays 256");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  // The box spans 0..0.556, 0..0.5488, 0..0.5592: floor(extent / 0.2) + 1 points on each axis.
+  const int count = int(std::floor(0.556 / 0.2) + 1) * int(std::floor(0.5488 / 0.2) + 1) *
+                    int(std::floor(0.5592 / 0.2) + 1);
+  std::ifstream jsonFile(out / "probes.json");
+  ASSERT_TRUE(jsonFile.good());
+  const nlohmann::json probes = nlohmann::json::parse(jsonFile);
+  ASSERT_EQ(static_cast<int>(probes["probes"].size()), count);
+  for (const auto& p : probes["probes"]) {
+    ASSERT_EQ(p["sh"].size(), 9u);
+    for (int c = 0; c < 3; ++c) EXPECT_GT(p["sh"][0][c].get<double>(), 0);  // lit inside the box
+  }
+  EXPECT_EQ(std::filesystem::file_size(out / "probes.bin"),
+            static_cast<uintmax_t>(12 + count * (12 + 108 + 4)));
+  std::filesystem::remove_all(out);
+
+  // A spacing of 0 is refused before the solve: nothing is written.
+  const auto bad = testing::scratchPath("cornell_probes_zero");
+  const auto r0 = testing::runRadiosity("solve " + kData + "/cornell_box/cornell_box.obj --out " +
+                                        bad.string() + " --probes 0");
+  EXPECT_EQ(r0.exitCode, 1);
+  EXPECT_NE(r0.stderrText.find("--probes must be a positive number"), std::string::npos)
+      << r0.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(bad));
+}
+
 }  // namespace
 }  // namespace rad
