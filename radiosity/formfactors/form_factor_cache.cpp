@@ -45,6 +45,17 @@ void FormFactorCache::computeRows(const std::vector<bool>& needed, Progress* pro
   seconds_ += secondsSince(start);
 }
 
+std::vector<FormFactorRow> FormFactorCache::takeAllRows(Progress* progress) {
+  computeRows(std::vector<bool>(rows_.size(), true), progress);
+  std::vector<FormFactorRow> rows;
+  rows.reserve(rows_.size());
+  for (auto& row : rows_) {
+    rows.push_back(std::move(*row));
+    *row = FormFactorRow();
+  }
+  return rows;
+}
+
 Eigen::SparseMatrix<double, Eigen::RowMajor> FormFactorCache::matrix() const {
   for (const auto& row : rows_)
     if (row && !row->tinted.empty())

@@ -26,6 +26,10 @@ class FormFactorCache : public ShotRows {
   // Computes every row with needed[i] true that is not cached yet, in parallel.
   void computeRows(const std::vector<bool>& needed, Progress* progress = nullptr);
 
+  // Every row, computed where missing, moved out (the cache keeps empty rows and its counts):
+  // for a caller that keeps them after the solve, without a second copy in memory.
+  std::vector<FormFactorRow> takeAllRows(Progress* progress = nullptr);
+
   // Sparse F with the cached rows (rows never computed are empty).
   Eigen::SparseMatrix<double, Eigen::RowMajor> matrix() const;
 

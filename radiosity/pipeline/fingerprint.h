@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "radiosity/core/rgb.h"
+#include "radiosity/scene/scene.h"
 
 namespace rad {
 
@@ -40,5 +41,25 @@ class Fingerprint {
   }
   uint64_t hash_ = 0xcbf29ce484222325ull;
 };
+
+// The scene's geometry: positions, and each polygon's material, back-side link, corners and
+// texture coordinates (which decide the textured reflectance and the cut-outs' holes).
+inline void addGeometry(Fingerprint& f, const Scene& scene) {
+  f.add(scene.positions.size());
+  for (const Eigen::Vector3d& p : scene.positions)
+    for (int k = 0; k < 3; ++k) f.add(p[k]);
+  f.add(scene.polygons.size());
+  for (const ScenePolygon& poly : scene.polygons) {
+    f.add(poly.material);
+    f.add(poly.backSideOf);
+    f.add(poly.vertices.size());
+    for (int v : poly.vertices) f.add(v);
+    f.add(poly.uvs.size());
+    for (const Eigen::Vector2d& uv : poly.uvs) {
+      f.add(uv.x());
+      f.add(uv.y());
+    }
+  }
+}
 
 }  // namespace rad

@@ -56,11 +56,8 @@ std::vector<FormFactorRow> FormFactorStage::takeAllRows() {
   for (int e = 0; e < mesh_.elementCount(); ++e)
     if (!cache_.hasRow(e)) missing += hemisphere_.raysForRow(e);
   Progress progress("rows kept", missing, "rays");
-  cache_.computeRows(std::vector<bool>(mesh_.elementCount(), true), &progress);
-  progress.finish(std::to_string(mesh_.elementCount()) + " rows");
-  std::vector<FormFactorRow> rows;
-  rows.reserve(mesh_.elementCount());
-  for (int e = 0; e < mesh_.elementCount(); ++e) rows.push_back(cache_.row(e));
+  std::vector<FormFactorRow> rows = cache_.takeAllRows(&progress);
+  progress.finish(std::to_string(rows.size()) + " rows");
   return rows;
 }
 

@@ -39,8 +39,8 @@ class FormFactorStage {
   // The hemisphere rows' method (also with analytic factors: the viewer draws its rays).
   const HemisphereFormFactors& hemisphere() const { return hemisphere_; }
 
-  // Every element's hemisphere row (computing those not cached yet, in parallel), copied out of
-  // the cache: for kept factors, after the solve.
+  // Every element's hemisphere row (computing those not cached yet, in parallel), moved out of
+  // the cache, which is spent: for kept factors, after the solve.
   std::vector<FormFactorRow> takeAllRows();
   // Adaptive refinement (analytic factors): elements that a shadow boundary of an emitting patch
   // crosses; updating the rows after `changed` elements were split; the point factors of an

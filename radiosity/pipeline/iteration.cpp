@@ -68,4 +68,11 @@ StopReason iterate(Solver& solver, const IterationLimits& limits,
   return reason;
 }
 
+void reportSolver(const Solver& solver, SolveReport& report) {
+  report.solverName = solver.name();
+  report.progressMeasure = solver.progressMeasure();
+  report.iterations = solver.iterations();
+  report.finalProgress = solver.progress();
+}
+
 }  // namespace rad

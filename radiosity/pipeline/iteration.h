@@ -28,6 +28,9 @@ IterationLimits iterationLimits(const SolveOptions& options, int elements,
 StopReason iterate(Solver& solver, const IterationLimits& limits,
                    std::vector<std::vector<Rgb>>* bounceTerms = nullptr);
 
+// The solver's name, measure, iteration count and final progress, into the report.
+void reportSolver(const Solver& solver, SolveReport& report);
+
 inline bool converged(StopReason reason) {
   return reason == StopReason::Tolerance || reason == StopReason::Bounces;
 }

@@ -137,21 +137,7 @@ SolveOptions optionsFromJson(const nlohmann::json& j, const Reader& reader) {
 std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& o) {
   Fingerprint f;
   f.add(std::string(kMagic));
-  f.add(scene.positions.size());
-  for (const Eigen::Vector3d& p : scene.positions)
-    for (int k = 0; k < 3; ++k) f.add(p[k]);
-  f.add(scene.polygons.size());
-  for (const ScenePolygon& poly : scene.polygons) {
-    f.add(poly.material);
-    f.add(poly.backSideOf);
-    f.add(poly.vertices.size());
-    for (int v : poly.vertices) f.add(v);
-    f.add(poly.uvs.size());
-    for (const Eigen::Vector2d& uv : poly.uvs) {
-      f.add(uv.x());
-      f.add(uv.y());
-    }
-  }
+  addGeometry(f, scene);
   f.add(scene.materials.size());
   for (const Material& m : scene.materials) {
     f.add(m.name);
@@ -184,23 +170,6 @@ std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& o) {
   f.add(o.twoSided.all);
   for (const std::string& m : o.twoSided.materials) f.add(m);
   return f.hex();
-}
-
-std::vector<int> keptRayMultipliers(const std::vector<double>& area,
-                                    const std::vector<std::vector<Rgb>>& sourcePower) {
-  const size_t n = area.size();
-  std::vector<int> multiplier(n, 1);
-  for (const std::vector<Rgb>& source : sourcePower) {
-    double total = 0;
-    for (size_t i = 0; i < n; ++i) total += area[i] * source[i].sum();
-    if (!(total > 0)) continue;
-    for (size_t i = 0; i < n; ++i) {
-      const double share = area[i] * source[i].sum() / total;
-      multiplier[i] =
-          std::max(multiplier[i], static_cast<int>(std::clamp(std::round(share * n), 1.0, 64.0)));
-    }
-  }
-  return multiplier;
 }
 
 void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {

@@ -36,14 +36,6 @@ inline constexpr const char* kKeptFactorsFile = "factors.bin";
 // nor the lights (their first shot is kept, E_d per light): those are what relight changes.
 std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& options);
 
-// Rays per emitter row for a solve that keeps its factors: each element's largest share of one
-// source's power — an emissive material's (A πLe over its elements) or a light's (A E_d, without
-// ρ) — times the element count, between 1 and 64 (as emitterRayMultipliers). Independent of the
-// materials' factors and the lights' strengths, so a fresh solve of a relit scene casts the very
-// rows relight reuses.
-std::vector<int> keptRayMultipliers(const std::vector<double>& area,
-                                    const std::vector<std::vector<Rgb>>& sourcePower);
-
 // factors.bin: the line "radiosity kept factors 1", a u64 (little-endian) byte count and that
 // many bytes of JSON (scene, fingerprint, elements, lights, options), then little-endian arrays:
 // area (f64 × n); per light, E_d (f64 × 3n); per element its row: u32 count c, u8 tinted, f64

@@ -40,14 +40,11 @@ std::vector<LightGroupProblem> makeLightGroupProblems(const Scene& scene, const 
   return groups;
 }
 
-std::vector<int> lightGroupRayMultipliers(const std::vector<LightGroupProblem>& groups) {
-  std::vector<int> multiplier;
-  for (const LightGroupProblem& g : groups) {
-    const std::vector<int> own = emitterRayMultipliers(g.problem);
-    if (multiplier.empty()) multiplier.assign(own.size(), 1);
-    for (size_t i = 0; i < own.size(); ++i) multiplier[i] = std::max(multiplier[i], own[i]);
-  }
-  return multiplier;
+std::vector<int> lightGroupRayMultipliers(const std::vector<LightGroupProblem>& groups,
+                                          const std::vector<double>& area) {
+  std::vector<std::vector<Rgb>> power;
+  for (const LightGroupProblem& g : groups) power.push_back(g.problem.emission);
+  return sourceRayMultipliers(area, power);
 }
 
 void solveLightGroups(std::vector<LightGroupProblem>& groups, FormFactorStage& formFactors,

@@ -35,7 +35,8 @@ std::vector<LightGroupProblem> makeLightGroupProblems(const Scene& scene, const 
 
 // The rays each emitter row gets (emitterRayMultipliers) from its largest share of any one
 // group's power: scaling a group's emission leaves every row, and so the other layers, unchanged.
-std::vector<int> lightGroupRayMultipliers(const std::vector<LightGroupProblem>& groups);
+std::vector<int> lightGroupRayMultipliers(const std::vector<LightGroupProblem>& groups,
+                                          const std::vector<double>& area);
 
 // Solves every group with its own solver over the shared form factors (rows computed once, cached)
 // and keeps each layer in solution.layers; solution.radiosity, pointRadiosity and unshot are their

@@ -53,17 +53,28 @@ std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMes
 
 // A shooter's row decides how evenly its power lands on the receivers. An emitter element shoots
 // a large share of all the light (all of it, at first), so its row gets rays in proportion to
-// that share: with n elements, an element emitting the fraction s of the power gets about s·n
-// times the rays of an average element (at least 1×, at most 64×). A uniform emitter gets 1×.
-std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem) {
-  const double emitted = problem.emittedPower();
-  std::vector<int> multiplier(problem.size(), 1);
-  if (!(emitted > 0)) return multiplier;
-  for (int i = 0; i < problem.size(); ++i) {
-    const double share = problem.area[i] * problem.emission[i].sum() / emitted;
-    multiplier[i] = static_cast<int>(std::clamp(std::round(share * problem.size()), 1.0, 64.0));
+// that share: with n elements, an element emitting the fraction s of a source's power gets about
+// s·n times the rays of an average element (at least 1×, at most 64×); with several sources, its
+// largest share of any one. A uniform emitter gets 1×.
+std::vector<int> sourceRayMultipliers(const std::vector<double>& area,
+                                      const std::vector<std::vector<Rgb>>& sourcePower) {
+  const size_t n = area.size();
+  std::vector<int> multiplier(n, 1);
+  for (const std::vector<Rgb>& source : sourcePower) {
+    double total = 0;
+    for (size_t i = 0; i < n; ++i) total += area[i] * source[i].sum();
+    if (!(total > 0)) continue;
+    for (size_t i = 0; i < n; ++i) {
+      const double share = area[i] * source[i].sum() / total;
+      multiplier[i] =
+          std::max(multiplier[i], static_cast<int>(std::clamp(std::round(share * n), 1.0, 64.0)));
+    }
   }
   return multiplier;
+}
+
+std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem) {
+  return sourceRayMultipliers(problem.area, {problem.emission});
 }
 
 ElementExposure solveExposure(const SolveOptions& options, const PatchMesh& mesh,

@@ -30,5 +30,10 @@ std::vector<SpecularSurface> specularSurfaces(const Scene& scene, const PatchMes
 // Rays per emitter row relative to an average row: about the element's share of the emitted
 // power times the element count, between 1 and 64.
 std::vector<int> emitterRayMultipliers(const RadiosityProblem& problem);
+// The same for several sources of power (per element, one vector per source): each element's
+// largest share of any one source. Scaling a source leaves every row's rays as they were, which
+// light groups and kept factors rely on.
+std::vector<int> sourceRayMultipliers(const std::vector<double>& area,
+                                      const std::vector<std::vector<Rgb>>& sourcePower);
 
 }  // namespace rad

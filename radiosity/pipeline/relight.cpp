@@ -117,10 +117,7 @@ SolveResult relightScene(const KeptFactors& kept, const std::string& keptPath, S
   solution.radiosity = solver->solution();
   if (const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver.get()))
     solution.unshot = shooting->unshotPowerOfElements();
-  report.solverName = solver->name();
-  report.progressMeasure = solver->progressMeasure();
-  report.iterations = solver->iterations();
-  report.finalProgress = solver->progress();
+  reportSolver(*solver, report);
   report.shooters = n;
   report.relitFrom = keptPath;
   report.skip("form factors and the lights' first shot",

@@ -25,23 +25,7 @@ constexpr const char* kFormat = "radiosity saved solution 1";
 std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
   Fingerprint f;
   f.add(std::string(kFormat));
-  f.add(scene.positions.size());
-  for (const Eigen::Vector3d& p : scene.positions) {
-    f.add(p.x());
-    f.add(p.y());
-    f.add(p.z());
-  }
-  f.add(scene.polygons.size());
-  for (const ScenePolygon& poly : scene.polygons) {
-    f.add(poly.material);
-    f.add(poly.vertices.size());
-    for (int v : poly.vertices) f.add(v);
-    f.add(poly.uvs.size());  // texture coordinates decide the textured reflectance
-    for (const Eigen::Vector2d& uv : poly.uvs) {
-      f.add(uv.x());
-      f.add(uv.y());
-    }
-  }
+  addGeometry(f, scene);
   f.add(scene.materials.size());
   for (const Material& m : scene.materials) {
     f.add(m.name);

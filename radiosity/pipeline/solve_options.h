@@ -52,7 +52,7 @@ struct SolveOptions {
   // factors, kept as Solution::layers; the whole solution is their sum.
   bool lightGroups = false;
   // solve --keep-factors: keep the rows, exposed areas and each light's E_d (kept_factors.h) for
-  // `relight`; every row is computed, and emitter rows get rays by keptRayMultipliers.
+  // `relight`; every row is computed, and emitter rows get rays by sourceRayMultipliers.
   bool keepFactors = false;
 };
 

@@ -76,16 +76,13 @@ void keepSolution(const Solver& solver, bool pointValues, Solution& solution, So
   const auto* shooting = dynamic_cast<const ProgressiveSolver*>(&solver);
   if (shooting && pointValues) solution.pointRadiosity = shooting->pointSolution();
   if (shooting) solution.unshot = shooting->unshotPowerOfElements();
-  report.solverName = solver.name();
-  report.progressMeasure = solver.progressMeasure();
-  report.iterations = solver.iterations();
-  report.finalProgress = solver.progress();
+  reportSolver(solver, report);
 }
 
 // --keep-factors: each light's first shot on its own (no lamp sampling across lights, so relight
 // can scale each E_d), added to the emission; the rays per emitter row from each source's own
-// shares (keptRayMultipliers). Returns the kept factors without their rows (taken after the
-// solve).
+// shares, without ρ (sourceRayMultipliers): relight changes neither. Returns the kept factors
+// without their rows (taken after the solve).
 std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster& rays,
                                              const SolveOptions& options,
                                              const ElementExposure& exposure,
@@ -120,7 +117,7 @@ std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster
     lightRays += stage.raysCast();
   }
   report.directLightRays = lightRays;
-  rayMultipliers = keptRayMultipliers(solution.problem.area, sources);
+  rayMultipliers = sourceRayMultipliers(solution.problem.area, sources);
   return kept;
 }
 
@@ -194,7 +191,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
         solution.scene, *solution.mesh, rays, options, &exposure, solution.problem);
     noteBlackElements(solution, report);
     FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options,
-                                &exposure, lightGroupRayMultipliers(groups));
+                                &exposure, lightGroupRayMultipliers(groups, solution.problem.area));
     throwIfInterrupted();
     t = Clock::now();
     solveLightGroups(groups, formFactors, options, limits, solution, report);

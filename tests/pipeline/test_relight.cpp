@@ -1,7 +1,7 @@
 // Relight (solve --keep-factors, then relight): the radiosity system B = E + ρ F B depends on the
 // materials and lights only through E and ρ, so a kept solve solved again with other colours,
 // emission and light strengths must equal a fresh solve of the scene so changed — the kept rows
-// are the very rows the fresh solve casts (keptRayMultipliers), and E_d scales with the light.
+// are the very rows the fresh solve casts (sourceRayMultipliers), and E_d scales with the light.
 #include <gtest/gtest.h>
 
 #include <algorithm>
