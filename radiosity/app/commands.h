@@ -19,6 +19,7 @@ void registerBakeCommand(CLI::App& app, CommandAction& run);
 void registerRenderCommand(CLI::App& app, CommandAction& run);
 void registerCompareCommand(CLI::App& app, CommandAction& run);
 void registerRelightCommand(CLI::App& app, CommandAction& run);
+void registerUpdateCommand(CLI::App& app, CommandAction& run);
 #ifdef RADIOSITY_HAS_VIEWER
 void registerViewCommand(CLI::App& app, CommandAction& run);  // built with the VTK viewer only
 #endif

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   rad::registerRenderCommand(app, run);
   rad::registerCompareCommand(app, run);
   rad::registerRelightCommand(app, run);
+  rad::registerUpdateCommand(app, run);
 #ifdef RADIOSITY_HAS_VIEWER
   rad::registerViewCommand(app, run);
 #endif

@@ -129,6 +129,18 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
                       : json{{"kept_factors", r.relitFrom},
                              {"rays_cast", r.raysCast + r.directLightRays + r.exposureProbeRays},
                              {"note", "solved again from the kept factors: no ray cast"}}},
+      {"update", r.update.keptFactors.empty()
+                     ? json()
+                     : json{{"kept_factors", r.update.keptFactors},
+                            {"elements_moved_or_added", r.update.moved},
+                            {"kept_elements_moved_or_removed", r.update.removed},
+                            {"rows_reused", r.update.rowsReused},
+                            {"rows_cast_again", r.rowsComputed},
+                            {"rows_meeting_the_edit", r.update.rowsMeetingEdit},
+                            {"rows_with_other_exposure_or_budget", r.update.rowsOtherChange},
+                            {"note",
+                             "a kept row is reused when its element stayed put and none of its "
+                             "rays meets the edited geometry's old or new place"}}},
   };
 }
 

@@ -30,6 +30,12 @@ class FormFactorCache : public ShotRows {
   // for a caller that keeps them after the solve, without a second copy in memory.
   std::vector<FormFactorRow> takeAllRows(Progress* progress = nullptr);
 
+  // Takes `row` as element's row, computed elsewhere (kept from an earlier solve, still valid):
+  // not counted as computed.
+  void adopt(int element, FormFactorRow&& row) {
+    rows_[element] = std::make_unique<FormFactorRow>(std::move(row));
+  }
+
   // Sparse F with the cached rows (rows never computed are empty).
   Eigen::SparseMatrix<double, Eigen::RowMajor> matrix() const;
 

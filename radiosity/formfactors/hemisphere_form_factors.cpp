@@ -263,6 +263,47 @@ std::vector<RowRay> HemisphereFormFactors::traceRow(int element) const {
   return rays;
 }
 
+bool HemisphereFormFactors::rowMeets(int element, const TriangleSetCaster& region) const {
+  RAD_CHECK_MSG(options_.specular.empty(), "rows through mirrors and glass are not tested");
+  if (region.empty()) return false;
+  std::vector<int> cells;
+  const RowSampler sampler(*this, element, cells);
+  const bool partlyBuried =
+      options_.exposure != nullptr && options_.exposure->buriedCells(element) != 0;
+  RayBlock b;
+  float regionDistance[RayBlock::kSize];
+  float meetingOrigin[3][RayBlock::kSize], meetingDirection[3][RayBlock::kSize];
+  float meetingDistance[RayBlock::kSize], sceneDistance[RayBlock::kSize];
+  int sceneElement[RayBlock::kSize];
+  for (int begin = 0; begin < sampler.count(); begin += RayBlock::kSize) {
+    b.count = std::min(RayBlock::kSize, sampler.count() - begin);
+    sampler.fill(begin, b);
+    const float* origin[3] = {b.castOrigin[0], b.castOrigin[1], b.castOrigin[2]};
+    const float* direction[3] = {b.direction[0], b.direction[1], b.direction[2]};
+    region.distances(b.count, origin, direction, regionDistance);
+    int meeting = 0;  // the rays that meet the region somewhere, to cast into the scene
+    for (int i = 0; i < b.count; ++i) {
+      if (!std::isfinite(regionDistance[i]) ||
+          (partlyBuried && options_.exposure->buried(element, b.u[2][i], b.u[3][i])))
+        continue;
+      for (int d = 0; d < 3; ++d) {
+        meetingOrigin[d][meeting] = b.castOrigin[d][i];
+        meetingDirection[d][meeting] = b.direction[d][i];
+      }
+      meetingDistance[meeting++] = regionDistance[i];
+    }
+    if (meeting == 0) continue;
+    const float* o[3] = {meetingOrigin[0], meetingOrigin[1], meetingOrigin[2]};
+    const float* d[3] = {meetingDirection[0], meetingDirection[1], meetingDirection[2]};
+    rays_.closestHits(meeting, o, d, sceneElement, sceneDistance);
+    // The region's triangles now in the scene are hit at the same distance as in the region
+    // (the same floats): "no farther", with a margin for the rounding of the two traversals.
+    for (int i = 0; i < meeting; ++i)
+      if (meetingDistance[i] <= sceneDistance[i] * (1 + 1e-5f)) return true;
+  }
+  return false;
+}
+
 FormFactorRow HemisphereFormFactors::computeRow(int element) const {
   RowBuffer cells, hits;
   const RowSampler sampler(*this, element, cells.get());

@@ -9,6 +9,7 @@
 #include "radiosity/formfactors/specular_paths.h"
 #include "radiosity/visibility/element_exposure.h"
 #include "radiosity/visibility/ray_caster.h"
+#include "radiosity/visibility/triangle_set_caster.h"
 
 namespace rad {
 
@@ -57,6 +58,14 @@ class HemisphereFormFactors {
   FormFactorRow computeRow(int element) const;  // uses TBB across the row's rays
   // The first segments of the rays computeRow(element) casts, with what each one hit first.
   std::vector<RowRay> traceRow(int element) const;
+  // Whether any ray computeRow(element) would cast (from the element's exposed part) meets one
+  // of `region`'s triangles no farther than its first hit in the scene. `region` holds what an
+  // edit changed, where it was and where it is now (the scene holding the latter): a ray whose
+  // first hit comes before the region has the same first hit before and after the edit, so when
+  // no ray meets the region first, the row is the same. Only the rays that meet the region at all
+  // are cast into the scene (serial; callers run rows in parallel). Scenes with mirrors or glass:
+  // rays continue past their first hit, so not answered (RAD_CHECK).
+  bool rowMeets(int element, const TriangleSetCaster& region) const;
   int raysForRow(int element) const {
     return options_.rayMultiplier.empty()
                ? options_.raysPerElement

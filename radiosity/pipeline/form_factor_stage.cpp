@@ -61,6 +61,18 @@ std::vector<FormFactorRow> FormFactorStage::takeAllRows() {
   return rows;
 }
 
+void FormFactorStage::adoptRows(std::vector<FormFactorRow>&& rows,
+                                const std::vector<char>& reused) {
+  RAD_CHECK_MSG(analytic_ == nullptr, "kept factors are hemisphere rows");
+  RAD_CHECK_EQ(rows.size(), reused.size());
+  for (size_t e = 0; e < rows.size(); ++e)
+    if (reused[e]) {
+      cache_.adopt(static_cast<int>(e), std::move(rows[e]));
+      ++adoptedRows_;
+      adoptedRays_ += hemisphere_.raysForRow(static_cast<int>(e));
+    }
+}
+
 const std::vector<char>& FormFactorStage::partlyShadowed() const {
   RAD_CHECK_MSG(analytic_ != nullptr, "shadow boundaries are known to analytic factors only");
   return analytic_->partlyShadowed();
@@ -81,7 +93,11 @@ void FormFactorStage::report(SolveReport& report, SolverKind solver) const {
   report.specularRays = analytic_ ? 0 : hemisphere_.specularRays();
   report.raysCast = analytic_ ? analytic_->raysCast() : cache_.raysCast() + report.specularRays;
   report.times.formFactors = analytic_ ? analytic_->seconds() : cache_.seconds();
-  if (report.rowsComputed < report.shooters) {
+  if (adoptedRows_ > 0)
+    report.skip("form-factor rows of " + std::to_string(adoptedRows_) + " elements (" +
+                    std::to_string(adoptedRays_) + " rays saved)",
+                "kept from the solve before the edit: none of their rays meets what changed");
+  if (report.rowsComputed + adoptedRows_ < report.shooters) {
     // Hemisphere rows have a known ray count each: report what skipping them saved.
     uint64_t raysSaved = 0;
     if (!analytic_)

@@ -42,6 +42,9 @@ class FormFactorStage {
   // Every element's hemisphere row (computing those not cached yet, in parallel), moved out of
   // the cache, which is spent: for kept factors, after the solve.
   std::vector<FormFactorRow> takeAllRows();
+  // Rows known still to hold (`update`: kept rows whose rays meet nothing that moved): reused[e]
+  // set means rows[e] is element e's row, taken into the cache as if computed.
+  void adoptRows(std::vector<FormFactorRow>&& rows, const std::vector<char>& reused);
   // Adaptive refinement (analytic factors): elements that a shadow boundary of an emitting patch
   // crosses; updating the rows after `changed` elements were split; the point factors of an
   // element to a shooter, from its cached row.
@@ -59,6 +62,8 @@ class FormFactorStage {
   HemisphereFormFactors hemisphere_;
   FormFactorCache cache_;
   std::unique_ptr<AnalyticPatchShots> analytic_;
+  int adoptedRows_ = 0;  // rows adoptRows took in, and the rays they would have cost
+  uint64_t adoptedRays_ = 0;
 };
 
 }  // namespace rad

@@ -9,14 +9,19 @@
 #include <nlohmann/json.hpp>
 #include <type_traits>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/fingerprint.h"
+#include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/pipeline/resource_limits.h"
+#include "radiosity/scene/light_groups.h"
 
 namespace rad {
 namespace {
 
-constexpr const char* kMagic = "radiosity kept factors 1\n";
+constexpr const char* kMagic = "radiosity kept factors 2\n";
+constexpr const char* kOlderMagic = "radiosity kept factors 1\n";
 constexpr uint64_t kMaxHeaderBytes = 1 << 24;
 
 template <typename T>
@@ -132,6 +137,42 @@ SolveOptions optionsFromJson(const nlohmann::json& j, const Reader& reader) {
   return o;
 }
 
+// The shortcuts --sky and --sun as the command line gave them, in order (the kept lights' order).
+nlohmann::json lightInputJson(const LightInput& input) {
+  nlohmann::json shortcuts = nlohmann::json::array();
+  for (const Light& l : input.shortcuts) {
+    if (l.type == LightType::Sky)
+      shortcuts.push_back({{"sky", {l.radiance.r, l.radiance.g, l.radiance.b}}});
+    else
+      shortcuts.push_back({{"sun",
+                            {l.direction.x(), l.direction.y(), l.direction.z(), l.irradiance.r,
+                             l.irradiance.g, l.irradiance.b}}});
+  }
+  return {{"file", input.file}, {"shortcuts", shortcuts}};
+}
+
+LightInput lightInputFromJson(const nlohmann::json& j, const Reader& reader) {
+  LightInput input;
+  input.file = j.at("file").get<std::string>();
+  for (const nlohmann::json& s : j.at("shortcuts")) {
+    try {
+      if (s.contains("sky")) {
+        const auto v = s.at("sky").get<std::vector<double>>();
+        if (v.size() != 3) reader.fail("the header's sky shortcut needs 3 numbers");
+        input.shortcuts.push_back(skyLight({v[0], v[1], v[2]}));
+      } else {
+        const auto v = s.at("sun").get<std::vector<double>>();
+        if (v.size() != 6) reader.fail("the header's sun shortcut needs 6 numbers");
+        input.shortcuts.push_back(sunLight({v[0], v[1], v[2]}, {v[3], v[4], v[5]}));
+      }
+    } catch (const InputError& e) {
+      if (!e.file().empty()) throw;
+      reader.fail(std::string("the header's light shortcuts are not valid: ") + e.what());
+    }
+  }
+  return input;
+}
+
 }  // namespace
 
 std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& o) {
@@ -181,7 +222,9 @@ void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
                                             {"fingerprint", kept.fingerprint},
                                             {"elements", n},
                                             {"lights", lights},
-                                            {"options", optionsJson(kept.options)}}
+                                            {"options", optionsJson(kept.options)},
+                                            {"element_edge", kept.elementEdge},
+                                            {"light_input", lightInputJson(kept.lightInput)}}
                                  .dump();
   out.write(kMagic, static_cast<std::streamsize>(std::strlen(kMagic)));
   put(out, static_cast<uint64_t>(header.size()));
@@ -207,14 +250,30 @@ void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
                     {static_cast<float>(t.r), static_cast<float>(t.g), static_cast<float>(t.b)});
     putArray(out, tinted);
   }
+  RAD_CHECK(kept.corners.size() == n && kept.material.size() == n && kept.patch.size() == n &&
+            kept.rayMultiplier.size() == n);
+  std::vector<double> corners;
+  corners.reserve(9 * n);
+  for (const auto& c : kept.corners)
+    for (const Eigen::Vector3d& p : c) corners.insert(corners.end(), {p.x(), p.y(), p.z()});
+  putArray(out, corners);
+  putArray(out, std::vector<int32_t>(kept.material.begin(), kept.material.end()));
+  putArray(out, std::vector<int32_t>(kept.patch.begin(), kept.patch.end()));
+  std::vector<uint8_t> multiplier;
+  for (int m : kept.rayMultiplier) multiplier.push_back(static_cast<uint8_t>(m));
+  putArray(out, multiplier);
 }
 
 KeptFactors readKeptFactors(const std::string& path) {
   Reader reader(path);
   std::string magic(std::strlen(kMagic), '\0');
   reader.bytes(magic.data(), magic.size(), "the first line");
+  if (magic == kOlderMagic)
+    reader.fail(
+        "kept by an older version of radiosity (format 1, without the mesh that update "
+        "needs): solve --keep-factors again");
   if (magic != kMagic)
-    reader.fail("not a kept form factors file (it starts with \"radiosity kept factors 1\")");
+    reader.fail("not a kept form factors file (it starts with \"radiosity kept factors 2\")");
   const auto headerBytes = reader.get<uint64_t>("the header's length");
   if (headerBytes > kMaxHeaderBytes || headerBytes > reader.left())
     reader.fail("the header's length " + std::to_string(headerBytes) + " is past the file's end");
@@ -232,6 +291,8 @@ KeptFactors readKeptFactors(const std::string& path) {
       kept.lightGroups.push_back(light.at("group").get<std::string>());
     }
     kept.options = optionsFromJson(header.at("options"), reader);
+    kept.elementEdge = header.at("element_edge").get<double>();
+    kept.lightInput = lightInputFromJson(header.at("light_input"), reader);
   } catch (const nlohmann::json::exception& e) {
     reader.fail(std::string("the header is not the expected JSON: ") + e.what());
   }
@@ -280,9 +341,103 @@ KeptFactors readKeptFactors(const std::string& path) {
         reader.fail(what + ": tinted factors must be finite, >= 0");
     }
   }
+  if (!(kept.elementEdge > 0) || !std::isfinite(kept.elementEdge))
+    reader.fail("the header's element_edge must be a positive number");
+  const std::vector<double> corners = reader.array<double>(9 * n, "the mesh's corners");
+  kept.corners.resize(n);
+  for (size_t i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double* p = &corners[9 * i + 3 * static_cast<size_t>(c)];
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+        reader.fail("element " + std::to_string(i) + "'s corners are not finite");
+      kept.corners[i][c] = {p[0], p[1], p[2]};
+    }
+  const std::vector<int32_t> material = reader.array<int32_t>(n, "the mesh's materials");
+  const std::vector<int32_t> patch = reader.array<int32_t>(n, "the mesh's patches");
+  const std::vector<uint8_t> multiplier = reader.array<uint8_t>(n, "the rows' ray multipliers");
+  for (size_t i = 0; i < n; ++i)
+    if (material[i] < 0 || patch[i] < 0 || multiplier[i] < 1 || multiplier[i] > 64)
+      reader.fail("element " + std::to_string(i) +
+                  ": a negative material or patch, or a ray multiplier outside 1..64");
+  kept.material.assign(material.begin(), material.end());
+  kept.patch.assign(patch.begin(), patch.end());
+  kept.rayMultiplier.assign(multiplier.begin(), multiplier.end());
   if (reader.left() != 0)
-    reader.fail(std::to_string(reader.left()) + " bytes after the last row: not one kept solve");
+    reader.fail(std::to_string(reader.left()) + " bytes after the mesh: not one kept solve");
   return kept;
+}
+
+std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster& rays,
+                                             const SolveOptions& options,
+                                             const ElementExposure& exposure, double elementEdge,
+                                             std::vector<int>& rayMultipliers,
+                                             SolveReport& report) {
+  const Scene& scene = solution.scene;
+  const PatchMesh& mesh = *solution.mesh;
+  auto kept = std::make_shared<KeptFactors>();
+  kept->scenePath = options.scenePath;
+  kept->fingerprint = keptFactorsFingerprint(scene, options);
+  kept->options = options;
+  kept->area = solution.problem.area;
+  kept->elementEdge = elementEdge;
+  std::vector<std::vector<Rgb>> sources;
+  for (size_t m = 0; m < scene.materials.size(); ++m) {
+    if (!scene.materials[m].isEmitter()) continue;
+    std::vector<Rgb>& power = sources.emplace_back(mesh.elementCount());
+    for (int e = 0; e < mesh.elementCount(); ++e)
+      if (mesh.material(e) == static_cast<int>(m)) power[e] = solution.problem.emission[e];
+  }
+  uint64_t lightRays = 0;
+  const std::vector<LightGroup> groups = lightGroups(scene);
+  kept->lightGroups.resize(scene.lights.size());
+  for (const LightGroup& g : groups)
+    for (size_t l : g.lights) kept->lightGroups[l] = g.name;
+  for (size_t l = 0; l < scene.lights.size(); ++l) {
+    const std::vector<size_t> one{l};
+    DirectLightStage stage(scene, mesh, rays, options, &exposure, &one);
+    stage.apply(solution.problem);
+    kept->lightTypes.push_back(lightTypeName(scene.lights[l].type));
+    kept->lightIrradiance.push_back(stage.irradiance());
+    sources.push_back(stage.irradiance());
+    lightRays += stage.raysCast();
+  }
+  report.directLightRays = lightRays;
+  rayMultipliers = sourceRayMultipliers(solution.problem.area, sources);
+  kept->lightInput = options.lights;
+  kept->rayMultiplier = rayMultipliers;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    kept->corners.push_back(mesh.corners(e));
+    kept->material.push_back(mesh.material(e));
+    kept->patch.push_back(mesh.patch(e));
+  }
+  return kept;
+}
+
+Eigen::SparseMatrix<double, Eigen::RowMajor> keptRowsMatrix(
+    const std::vector<FormFactorRow>& rows) {
+  const int n = static_cast<int>(rows.size());
+  size_t entries = 0;
+  for (const FormFactorRow& row : rows) {
+    if (!row.tinted.empty())
+      throw InputError(
+          "form factors through mirrors or glass are tinted per channel; the gathering solvers "
+          "use one matrix for all channels: use --solver progressive for this scene");
+    entries += row.targets.size();
+  }
+  // Compressed row storage written directly: the rows are sorted by target already.
+  Eigen::SparseMatrix<double, Eigen::RowMajor> f(n, n);
+  f.resizeNonZeros(static_cast<Eigen::Index>(entries));
+  size_t at = 0;
+  for (int i = 0; i < n; ++i) {
+    f.outerIndexPtr()[i] = static_cast<int>(at);
+    const FormFactorRow& row = rows[static_cast<size_t>(i)];
+    for (size_t k = 0; k < row.targets.size(); ++k, ++at) {
+      f.innerIndexPtr()[at] = row.targets[k];
+      f.valuePtr()[at] = row.values[k];
+    }
+  }
+  f.outerIndexPtr()[n] = static_cast<int>(at);
+  return f;
 }
 
 }  // namespace rad

@@ -1,5 +1,9 @@
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <array>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -7,8 +11,12 @@
 #include "radiosity/core/rgb.h"
 #include "radiosity/formfactors/form_factor_row.h"
 #include "radiosity/formfactors/shot_rows.h"
+#include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_options.h"
+#include "radiosity/scene/lights.h"
 #include "radiosity/scene/scene.h"
+#include "radiosity/visibility/element_exposure.h"
+#include "radiosity/visibility/ray_caster.h"
 
 namespace rad {
 
@@ -26,6 +34,15 @@ struct KeptFactors {
   std::vector<std::string> lightTypes;            // per light: lightTypeName
   std::vector<std::vector<Rgb>> lightIrradiance;  // per light, per element: E_d (W·m⁻²)
   std::vector<FormFactorRow> rows;                // per element: its hemisphere row
+
+  // For `update` after a geometry edit (incremental.h): what the mesh was, to tell which elements
+  // stayed put, and the inputs that must be the same again.
+  double elementEdge = 0;  // the mesh's element size S (ElementSizing::edge): update meshes with it
+  LightInput lightInput;   // the solve's --lights file and --sky/--sun shortcuts
+  std::vector<std::array<Eigen::Vector3d, 3>> corners;  // per element
+  std::vector<int> material;                            // per element
+  std::vector<int> patch;                               // per element
+  std::vector<int> rayMultiplier;                       // per element: its row's rays / --rays
 };
 
 inline constexpr const char* kKeptFactorsFile = "factors.bin";
@@ -36,14 +53,31 @@ inline constexpr const char* kKeptFactorsFile = "factors.bin";
 // nor the lights (their first shot is kept, E_d per light): those are what relight changes.
 std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& options);
 
-// factors.bin: the line "radiosity kept factors 1", a u64 (little-endian) byte count and that
-// many bytes of JSON (scene, fingerprint, elements, lights, options), then little-endian arrays:
-// area (f64 × n); per light, E_d (f64 × 3n); per element its row: u32 count c, u8 tinted, f64
-// escaped, i32 targets[c], f32 values[c], and f32 × 3c tinted values when tinted.
+// factors.bin: the line "radiosity kept factors 2", a u64 (little-endian) byte count and that
+// many bytes of JSON (scene, fingerprint, elements, lights, options, element_edge, light_input),
+// then little-endian arrays: area (f64 × n); per light, E_d (f64 × 3n); per element its row: u32
+// count c, u8 tinted, f64 escaped, i32 targets[c], f32 values[c], and f32 × 3c tinted values when
+// tinted; then the mesh: corners (f64 × 9n), material (i32 × n), patch (i32 × n), ray multiplier
+// (u8 × n).
 void writeKeptFactors(std::ostream& out, const KeptFactors& kept);
 // InputError naming the file (and the row or array) when it is not such a file, is cut short or
 // holds values no solve writes (targets out of range, negative or non-finite factors).
 KeptFactors readKeptFactors(const std::string& path);
+
+// --keep-factors: each light's first shot on its own (no lamp sampling across lights, so relight
+// can scale each E_d), added to the emission; the rays per emitter row from each source's own
+// shares, without ρ (sourceRayMultipliers): relight changes neither. Returns the kept factors
+// without their rows (taken after the solve), with the mesh `update` compares against;
+// `elementEdge` the mesh's element size S.
+std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster& rays,
+                                             const SolveOptions& options,
+                                             const ElementExposure& exposure, double elementEdge,
+                                             std::vector<int>& rayMultipliers, SolveReport& report);
+
+// F as the gathering solvers read it, from rows sorted by target (FormFactorCache::matrix's
+// rule), written directly as compressed rows. InputError for tinted rows (mirrors and glass):
+// the gathering solvers use one matrix for all channels.
+Eigen::SparseMatrix<double, Eigen::RowMajor> keptRowsMatrix(const std::vector<FormFactorRow>& rows);
 
 // The kept rows as progressive shooting reads them (elements shoot their own rows).
 class KeptRows : public ShotRows {

@@ -17,36 +17,6 @@
 #include "radiosity/solvers/solver_factory.h"
 
 namespace rad {
-namespace {
-
-// F as the gathering solvers read it, from the kept rows (FormFactorCache::matrix's rule).
-Eigen::SparseMatrix<double, Eigen::RowMajor> keptMatrix(const KeptFactors& kept) {
-  const int n = static_cast<int>(kept.rows.size());
-  size_t entries = 0;
-  for (const FormFactorRow& row : kept.rows) {
-    if (!row.tinted.empty())
-      throw InputError(
-          "form factors through mirrors or glass are tinted per channel; the gathering solvers "
-          "use one matrix for all channels: use --solver progressive for this scene");
-    entries += row.targets.size();
-  }
-  // Compressed row storage written directly: the rows are sorted by target already.
-  Eigen::SparseMatrix<double, Eigen::RowMajor> f(n, n);
-  f.resizeNonZeros(static_cast<Eigen::Index>(entries));
-  size_t at = 0;
-  for (int i = 0; i < n; ++i) {
-    f.outerIndexPtr()[i] = static_cast<int>(at);
-    const FormFactorRow& row = kept.rows[static_cast<size_t>(i)];
-    for (size_t k = 0; k < row.targets.size(); ++k, ++at) {
-      f.innerIndexPtr()[at] = row.targets[k];
-      f.valuePtr()[at] = row.values[k];
-    }
-  }
-  f.outerIndexPtr()[n] = static_cast<int>(at);
-  return f;
-}
-
-}  // namespace
 
 Scene loadKeptScene(const KeptFactors& kept) {
   Scene scene = loadScene(kept.scenePath);
@@ -110,7 +80,7 @@ SolveResult relightScene(const KeptFactors& kept, const std::string& keptPath, S
 
   KeptRows rows(kept);
   const std::unique_ptr<Solver> solver =
-      makeSolver(options.solver, solution.problem, rows, [&] { return keptMatrix(kept); });
+      makeSolver(options.solver, solution.problem, rows, [&] { return keptRowsMatrix(kept.rows); });
   const IterationLimits limits = iterationLimits(options, n, start);
   report.stoppedBy = iterate(*solver, limits);
   report.converged = converged(report.stoppedBy);

@@ -79,48 +79,6 @@ void keepSolution(const Solver& solver, bool pointValues, Solution& solution, So
   reportSolver(solver, report);
 }
 
-// --keep-factors: each light's first shot on its own (no lamp sampling across lights, so relight
-// can scale each E_d), added to the emission; the rays per emitter row from each source's own
-// shares, without ρ (sourceRayMultipliers): relight changes neither. Returns the kept factors
-// without their rows (taken after the solve).
-std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster& rays,
-                                             const SolveOptions& options,
-                                             const ElementExposure& exposure,
-                                             std::vector<int>& rayMultipliers,
-                                             SolveReport& report) {
-  const Scene& scene = solution.scene;
-  const PatchMesh& mesh = *solution.mesh;
-  auto kept = std::make_shared<KeptFactors>();
-  kept->scenePath = options.scenePath;
-  kept->fingerprint = keptFactorsFingerprint(scene, options);
-  kept->options = options;
-  kept->area = solution.problem.area;
-  std::vector<std::vector<Rgb>> sources;
-  for (size_t m = 0; m < scene.materials.size(); ++m) {
-    if (!scene.materials[m].isEmitter()) continue;
-    std::vector<Rgb>& power = sources.emplace_back(mesh.elementCount());
-    for (int e = 0; e < mesh.elementCount(); ++e)
-      if (mesh.material(e) == static_cast<int>(m)) power[e] = solution.problem.emission[e];
-  }
-  uint64_t lightRays = 0;
-  const std::vector<LightGroup> groups = lightGroups(scene);
-  kept->lightGroups.resize(scene.lights.size());
-  for (const LightGroup& g : groups)
-    for (size_t l : g.lights) kept->lightGroups[l] = g.name;
-  for (size_t l = 0; l < scene.lights.size(); ++l) {
-    const std::vector<size_t> one{l};
-    DirectLightStage stage(scene, mesh, rays, options, &exposure, &one);
-    stage.apply(solution.problem);
-    kept->lightTypes.push_back(lightTypeName(scene.lights[l].type));
-    kept->lightIrradiance.push_back(stage.irradiance());
-    sources.push_back(stage.irradiance());
-    lightRays += stage.raysCast();
-  }
-  report.directLightRays = lightRays;
-  rayMultipliers = sourceRayMultipliers(solution.problem.area, sources);
-  return kept;
-}
-
 void warnIfNotConverged(const IterationLimits& limits, const Solution& solution,
                         const SolveReport& report) {
   const std::string reached = report.progressMeasure + " " + formatNumber(report.finalProgress);
@@ -203,7 +161,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     std::shared_ptr<KeptFactors> kept;
     std::vector<int> rayMultipliers;  // empty: from the problem's emission
     if (options.keepFactors) {
-      kept = keepLightsApart(solution, rays, options, exposure, rayMultipliers, report);
+      kept = keepLightsApart(solution, rays, options, exposure, meshed.sizing.edge, rayMultipliers,
+                             report);
     } else {
       directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
     }

@@ -3,6 +3,8 @@
 #include <Eigen/SparseLU>
 #include <stdexcept>
 
+#include "radiosity/core/check.h"
+
 namespace rad {
 namespace {
 Rgb gatherRow(const SparseRows& f, int i, const std::vector<Rgb>& b) {
@@ -29,6 +31,12 @@ double relativeResidual(const RadiosityProblem& problem, const SparseRows& f,
 GatheringSolver::GatheringSolver(const RadiosityProblem& problem, SparseRows&& formFactors)
     : problem_(problem), solution_(problem.emission) {
   f_.swap(formFactors);
+  residual_ = relativeResidual(problem_, f_, solution_);
+}
+
+void GatheringSolver::startFrom(std::vector<Rgb> guess) {
+  RAD_CHECK_EQ(guess.size(), solution_.size());
+  solution_ = std::move(guess);
   residual_ = relativeResidual(problem_, f_, solution_);
 }
 

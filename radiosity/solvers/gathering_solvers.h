@@ -23,6 +23,9 @@ class GatheringSolver : public Solver {
   const std::vector<Rgb>& solution() const override { return solution_; }
   int iterations() const override { return iterations_; }
   std::string progressMeasure() const override { return "relative residual"; }
+  // Iterates on from `guess` instead of B_0 = E (one B per element): `update` starts from the
+  // solution before the edit, which is already right wherever the edit changed nothing.
+  void startFrom(std::vector<Rgb> guess);
 
  protected:
   // Takes the matrix over (swapped in: Eigen 3.4's SparseMatrix "move" copies every entry, which

@@ -65,6 +65,10 @@ void checkKept(const rad::KeptFactors& k) {
     }
   }
   check(k.options.raysPerElement >= 1 && k.options.keepFactors, "bad options");
+  check(k.corners.size() == n && k.material.size() == n && k.patch.size() == n &&
+            k.rayMultiplier.size() == n,
+        "not one corner triple, material, patch and ray multiplier per element");
+  check(std::isfinite(k.elementEdge) && k.elementEdge > 0, "bad element edge");
 }
 
 }  // namespace
@@ -99,5 +103,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   check(back->scenePath == kept->scenePath && back->fingerprint == kept->fingerprint,
         "header differs after the round trip");
+  check(back->corners == kept->corners && back->material == kept->material &&
+            back->patch == kept->patch && back->rayMultiplier == kept->rayMultiplier &&
+            back->elementEdge == kept->elementEdge,
+        "the mesh differs after the round trip");
+  check(back->lightInput.file == kept->lightInput.file &&
+            back->lightInput.shortcuts.size() == kept->lightInput.shortcuts.size(),
+        "the light input differs after the round trip");
   return 0;
 }

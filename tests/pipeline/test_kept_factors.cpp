@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr size_t kMagicBytes = 25;  // "radiosity kept factors 1\n"
+constexpr size_t kMagicBytes = 25;  // "radiosity kept factors 2\n"
 
 // 4 elements, 2 lights; row 0 plain, row 1 tinted, row 2 empty (all escaped), row 3 plain with
 // values a float does not hold exactly.
@@ -58,6 +58,16 @@ KeptFactors sample() {
   k.rows[3].targets = {0, 1, 2};
   k.rows[3].values = {0.1, 0.2, 0.3};
   k.rows[3].escaped = 0.4;
+  k.elementEdge = 0.125;
+  k.lightInput.file = "lamps.lights.json";
+  k.lightInput.shortcuts = {skyLight({0.3, 0.4, 0.5}), sunLight({0, -1, 0}, {8, 7, 6})};
+  for (int e = 0; e < 4; ++e) {
+    k.corners.push_back(
+        {Eigen::Vector3d(e, 0, 0), Eigen::Vector3d(e, 1, 0.5), Eigen::Vector3d(e, 0, 1.0 / 3)});
+    k.material.push_back(e % 2);
+    k.patch.push_back(e / 2);
+    k.rayMultiplier.push_back(1 + 21 * e);
+  }
   return k;
 }
 
@@ -202,6 +212,19 @@ TEST_F(KeptFactorsTest, RoundTripKeepsEveryField) {
   }
   // 0.1 is no float: the rounding is real, so the comparison above is not a tautology.
   EXPECT_NE(out.rows[3].values[0], 0.1);
+  // The mesh and inputs update compares against.
+  EXPECT_EQ(out.elementEdge, in.elementEdge);
+  EXPECT_EQ(out.corners, in.corners);
+  EXPECT_EQ(out.material, in.material);
+  EXPECT_EQ(out.patch, in.patch);
+  EXPECT_EQ(out.rayMultiplier, in.rayMultiplier);
+  EXPECT_EQ(out.lightInput.file, in.lightInput.file);
+  ASSERT_EQ(out.lightInput.shortcuts.size(), 2u);
+  EXPECT_EQ(out.lightInput.shortcuts[0].type, LightType::Sky);
+  EXPECT_EQ(out.lightInput.shortcuts[0].radiance.g, 0.4);
+  EXPECT_EQ(out.lightInput.shortcuts[1].type, LightType::Directional);
+  EXPECT_EQ(out.lightInput.shortcuts[1].irradiance.b, 6);
+  EXPECT_EQ(out.lightInput.shortcuts[1].direction, Eigen::Vector3d(0, -1, 0));
 
   // Written again, the file is the same bytes.
   EXPECT_EQ(bytesOf(out), bytesOf(in));
@@ -214,6 +237,10 @@ TEST_F(KeptFactorsTest, NoElementsNoLightsRoundTrip) {
   in.lightGroups.clear();
   in.lightTypes.clear();
   in.lightIrradiance.clear();
+  in.corners.clear();
+  in.material.clear();
+  in.patch.clear();
+  in.rayMultiplier.clear();
   write(bytesOf(in));
   const KeptFactors out = readKeptFactors(path_);
   EXPECT_TRUE(out.area.empty());
@@ -224,17 +251,50 @@ TEST_F(KeptFactorsTest, NoElementsNoLightsRoundTrip) {
 
 TEST_F(KeptFactorsTest, EveryTruncationIsAnInputError) {
   const std::string bytes = bytesOf(sample());
-  ASSERT_LT(bytes.size(), 2000u);  // small enough to try every length
+  ASSERT_LT(bytes.size(), 3000u);  // small enough to try every length
   for (size_t length = 0; length < bytes.size(); ++length) {
     SCOPED_TRACE("length " + std::to_string(length));
     expectRejected(bytes.substr(0, length));
   }
 }
 
-TEST_F(KeptFactorsTest, BytesAfterTheLastRowAreAnInputError) {
+TEST_F(KeptFactorsTest, BytesAfterTheMeshAreAnInputError) {
   const std::string bytes = bytesOf(sample());
-  expectRejected(bytes + '\0', "after the last row");
-  expectRejected(bytes + std::string(100, 'x'), "after the last row");
+  expectRejected(bytes + '\0', "after the mesh");
+  expectRejected(bytes + std::string(100, 'x'), "after the mesh");
+}
+
+TEST_F(KeptFactorsTest, BadMeshIsAnInputError) {
+  const std::string bytes = bytesOf(sample());
+  const size_t n = 4, mesh = layoutOf(bytes).row(4);
+  expectRejected(patched<double>(bytes, mesh + 8 * 4, std::nan("")), "corners are not finite");
+  expectRejected(patched<int32_t>(bytes, mesh + 72 * n + 4, -1), "negative material");
+  expectRejected(patched<int32_t>(bytes, mesh + 76 * n + 8, -3), "negative material or patch");
+  expectRejected(patched<uint8_t>(bytes, mesh + 80 * n + 2, 0), "ray multiplier");
+  expectRejected(patched<uint8_t>(bytes, mesh + 80 * n + 3, 65), "ray multiplier");
+  // The same places with the values already there read (the offsets above are the layout's).
+  std::string same = patched<double>(bytes, mesh + 8 * 4, 1.0);
+  same = patched<int32_t>(same, mesh + 72 * n + 4, 1);
+  same = patched<int32_t>(same, mesh + 76 * n + 8, 1);
+  same = patched<uint8_t>(same, mesh + 80 * n + 2, 43);
+  EXPECT_EQ(same, bytes);
+  expectRejected(withHeader(bytes, [](nlohmann::json& h) { h["element_edge"] = 0; }),
+                 "element_edge");
+  expectRejected(withHeader(bytes,
+                            [](nlohmann::json& h) {
+                              h["light_input"]["shortcuts"][0] = {{"sky", {1, 2}}};
+                            }),
+                 "sky shortcut");
+  expectRejected(withHeader(bytes,
+                            [](nlohmann::json& h) {
+                              h["light_input"]["shortcuts"][1] = {{"sun", {0, 0, 0, 1, 1, 1}}};
+                            }),
+                 "shortcuts are not valid");
+}
+
+TEST_F(KeptFactorsTest, AnOlderFormatSaysToSolveAgain) {
+  const std::string bytes = bytesOf(sample());
+  expectRejected(patched<char>(bytes, 23, '1'), "older version");
 }
 
 TEST_F(KeptFactorsTest, MissingFileIsAnInputError) {
@@ -250,7 +310,7 @@ TEST_F(KeptFactorsTest, MissingFileIsAnInputError) {
 TEST_F(KeptFactorsTest, WrongMagicIsAnInputError) {
   const std::string bytes = bytesOf(sample());
   expectRejected(patched<char>(bytes, 0, 'R'), "not a kept form factors file");
-  expectRejected(patched<char>(bytes, 23, '2'), "not a kept form factors file");
+  expectRejected(patched<char>(bytes, 23, '3'), "not a kept form factors file");
 }
 
 TEST_F(KeptFactorsTest, HeaderLengthPastTheEndIsAnInputError) {
@@ -394,7 +454,8 @@ TEST_F(KeptFactorsTest, PatchedSampleStillReads) {
   same = patched<uint32_t>(same, l.row(2), 0);
   same = patched<double>(same, l.row(0) + 5, 0.325);
   ASSERT_EQ(same, bytes);
-  EXPECT_EQ(l.row(4), bytes.size());
+  // After the rows, the mesh: 9 corners' f64, a material and a patch i32, a multiplier u8 each.
+  EXPECT_EQ(l.row(4) + 4 * (72 + 4 + 4 + 1), bytes.size());
   write(withHeader(bytes, [](nlohmann::json& h) { h["scene"] = "elsewhere/scene.obj"; }));
   EXPECT_EQ(readKeptFactors(path_).scenePath, "elsewhere/scene.obj");
 }

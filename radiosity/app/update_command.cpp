@@ -1,0 +1,99 @@
+// `radiosity update DIR`: a solve kept with `solve --keep-factors` brought up to date after its
+// scene's geometry was edited (an object moved, added or removed): only the form-factor rows the
+// edit can change are cast again, and the solve goes on from the previous solution. The outputs
+// (elements.csv, vertex_colors.ply, summary.json, factors.bin, …) are rewritten in DIR, or
+// written to --out.
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "radiosity/app/commands.h"
+#include "radiosity/app/solve_outputs.h"
+#include "radiosity/core/errors.h"
+#include "radiosity/core/interrupt.h"
+#include "radiosity/core/log.h"
+#include "radiosity/output/elements_csv.h"
+#include "radiosity/pipeline/incremental_update.h"
+#include "radiosity/pipeline/kept_factors.h"
+
+namespace rad {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+struct UpdateOptions {
+  std::string dir;
+  std::string outputDir;  // default: dir
+  std::string solverName = "gauss-seidel";
+  std::optional<double> tolerance;
+  std::optional<int> maxIterations;
+  int threads = 0;
+};
+
+void runUpdate(const UpdateOptions& o) {
+  const std::filesystem::path dir(o.dir);
+  const std::string keptPath = (dir / kKeptFactorsFile).string();
+  if (!std::filesystem::exists(keptPath))
+    throw InputError(o.dir, 0,
+                     "no kept form factors (" + std::string(kKeptFactorsFile) +
+                         ") here: solve with --keep-factors --out " + o.dir + " first");
+  const std::string csvPath = (dir / "elements.csv").string();
+  if (!std::filesystem::exists(csvPath))
+    throw InputError(o.dir, 0, "no elements.csv here: the previous solution update starts from");
+  auto t = std::chrono::steady_clock::now();
+  const KeptFactors kept = readKeptFactors(keptPath);
+  std::vector<Rgb> previous;
+  for (const ElementsCsvRow& row : readElementsCsv(csvPath)) previous.push_back(row.radiosity);
+  logInfo("read " + keptPath + " and " + csvPath + ": " + std::to_string(kept.rows.size()) +
+          " rows in " + formatNumber(secondsSince(t)) + " s");
+  SolveOptions solver = kept.options;
+  solver.solver = parseSolverKind(o.solverName);
+  if (o.tolerance) solver.tolerance = *o.tolerance;
+  if (o.maxIterations) solver.maxIterations = *o.maxIterations;
+  solver.threads = o.threads;
+  solver.outputDir = o.outputDir.empty() ? o.dir : o.outputDir;
+  SolveResult result = updateKeptSolve(kept, keptPath, previous, solver);
+  throwIfInterrupted();
+  SolveOptions written = updatedSolutionOptions(kept, result);
+  written.outputDir = solver.outputDir;
+  written.keepFactors = true;  // factors.bin (with the fixed element size) for the next update
+  {
+    OutputSection writing;
+    writeSolveOutputs(written, result);
+  }
+  clearInterrupt();
+  const SolveReport::Update& u = result.report.update;
+  logInfo("updated " + kept.scenePath + " from " + keptPath + " in " +
+          formatNumber(result.report.times.total) + " s: " + std::to_string(u.rowsReused) + " of " +
+          std::to_string(result.solution.mesh->elementCount()) + " rows reused");
+}
+
+}  // namespace
+
+void registerUpdateCommand(CLI::App& app, CommandAction& run) {
+  auto o = std::make_shared<UpdateOptions>();
+  CLI::App* update = app.add_subcommand(
+      "update",
+      "Bring a kept solve (solve --keep-factors) up to date after its scene's geometry was edited, "
+      "casting again only the rows the edit changes");
+  update->add_option("dir", o->dir, "Output directory of `radiosity solve --keep-factors`")
+      ->required();
+  update->add_option("--out", o->outputDir, "Write the outputs here instead of into DIR");
+  update
+      ->add_option("--solver", o->solverName,
+                   "gauss-seidel | jacobi: a gathering solver, which starts from the previous "
+                   "solution")
+      ->default_val(o->solverName)
+      ->check(CLI::IsMember({"gauss-seidel", "jacobi"}));
+  update->add_option("--tolerance", o->tolerance, "Relative tolerance (default: the kept solve's)");
+  update->add_option("--max-iterations", o->maxIterations, "Iteration budget (0: the default)");
+  update->add_option("--threads", o->threads, "Worker threads (0: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  addCommonFlags(*update);
+  update->callback([&run, o] { run = [o] { runUpdate(*o); }; });
+}
+
+}  // namespace rad

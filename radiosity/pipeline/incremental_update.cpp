@@ -1,0 +1,279 @@
+#include "radiosity/pipeline/incremental_update.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <numeric>
+#include <unordered_map>
+
+#include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
+#include "radiosity/core/log.h"
+#include "radiosity/core/progress.h"
+#include "radiosity/pipeline/element_size.h"
+#include "radiosity/pipeline/form_factor_stage.h"
+#include "radiosity/pipeline/iteration.h"
+#include "radiosity/pipeline/mesh_stage.h"
+#include "radiosity/pipeline/problem_setup.h"
+#include "radiosity/pipeline/resource_limits.h"
+#include "radiosity/scene/scene_loader.h"
+#include "radiosity/solvers/gathering_solvers.h"
+#include "radiosity/solvers/solver_factory.h"
+#include "radiosity/visibility/triangle_set_caster.h"
+
+namespace rad {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// An element's identity across meshes: its material and the exact bits of its corners. Uniform
+// meshing is deterministic, so a polygon that did not change meshes into the same elements.
+std::string elementKey(int material, const std::array<Eigen::Vector3d, 3>& corners) {
+  std::string key(sizeof(int) + 9 * sizeof(double), '\0');
+  std::memcpy(key.data(), &material, sizeof(int));
+  for (int c = 0; c < 3; ++c)
+    std::memcpy(key.data() + sizeof(int) + 3 * c * sizeof(double), corners[c].data(),
+                3 * sizeof(double));
+  return key;
+}
+
+// Per new element, the kept element it is (or -1): matched by key, each kept element at most once.
+std::vector<int> matchElements(const KeptFactors& kept, const PatchMesh& mesh) {
+  std::unordered_multimap<std::string, int> old;
+  old.reserve(kept.corners.size());
+  for (size_t i = 0; i < kept.corners.size(); ++i)
+    old.emplace(elementKey(kept.material[i], kept.corners[i]), static_cast<int>(i));
+  std::vector<int> match(static_cast<size_t>(mesh.elementCount()), -1);
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const auto found = old.find(elementKey(mesh.material(e), mesh.corners(e)));
+    if (found == old.end()) continue;
+    match[static_cast<size_t>(e)] = found->second;
+    old.erase(found);
+  }
+  return match;
+}
+
+// Kept row `row` in the new element numbering; false when a target is no longer in the mesh (its
+// ray met the removed geometry after all, at float rounding: the row is cast again).
+bool renumber(FormFactorRow& row, const std::vector<int>& newIndexOfOld) {
+  std::vector<std::pair<int, double>> entries;
+  entries.reserve(row.targets.size());
+  for (size_t k = 0; k < row.targets.size(); ++k) {
+    const int to = newIndexOfOld[static_cast<size_t>(row.targets[k])];
+    if (to < 0) return false;
+    entries.emplace_back(to, row.values[k]);
+  }
+  std::sort(entries.begin(), entries.end());
+  for (size_t k = 0; k < entries.size(); ++k) {
+    row.targets[k] = entries[k].first;
+    row.values[k] = entries[k].second;
+  }
+  return true;
+}
+
+}  // namespace
+
+SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
+                            const std::vector<Rgb>& previous, const SolveOptions& solverOptions) {
+  const auto start = Clock::now();
+  if (previous.size() != kept.area.size())
+    throw InputError(keptPath, 0,
+                     "the previous solution has " + std::to_string(previous.size()) +
+                         " elements, the kept factors " + std::to_string(kept.area.size()) +
+                         ": not the same solve");
+  if (solverOptions.solver != SolverKind::GaussSeidel && solverOptions.solver != SolverKind::Jacobi)
+    throw InputError(
+        "update continues from the previous solution, which only the gathering "
+        "solvers can: --solver gauss-seidel (the default) or jacobi");
+  // The kept solve's mesh and ray options, with its element size fixed: an added object must not
+  // change the size the scene's default would pick, or no element would stay put.
+  SolveOptions options = kept.options;
+  options.scenePath = kept.scenePath;
+  options.lights = kept.lightInput;
+  options.maxArea = 0;
+  options.targetElements = 0;
+  options.elementSize = kept.elementEdge;
+  options.solver = solverOptions.solver;
+  options.tolerance = solverOptions.tolerance;
+  options.maxIterations = solverOptions.maxIterations;
+  options.threads = solverOptions.threads;
+  options.timeLimit = solverOptions.timeLimit;
+  options.outputDir = solverOptions.outputDir;
+  options.keepFactors = true;
+  validateSolveOptions(options);
+
+  SolveResult result;
+  Solution& solution = result.solution;
+  SolveReport& report = result.report;
+  report.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
+  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
+                                        static_cast<size_t>(report.threads));
+  auto t = Clock::now();
+  solution.scene = loadScene(options.scenePath, options.lights, options.twoSided);
+  report.times.load = since(t);
+  checkSceneLimits(solution.scene);
+  requireEmitter(solution.scene);
+  if (solution.scene.hasSpecular())
+    throw InputError(
+        keptPath, 0,
+        "the scene has mirrors or glass, whose rows continue past their first hit: "
+        "update cannot tell which of them an edit changes; solve --keep-factors again");
+  if (solution.scene.lights.size() != kept.lightIrradiance.size())
+    throw InputError(keptPath, 0,
+                     "the scene has " + std::to_string(solution.scene.lights.size()) +
+                         " lights, the kept solve had " +
+                         std::to_string(kept.lightIrradiance.size()) +
+                         ": update follows geometry edits; solve --keep-factors again");
+
+  t = Clock::now();
+  MeshedScene meshed = meshScene(solution.scene, options);
+  solution.mesh = std::move(meshed.mesh);
+  const PatchMesh& mesh = *solution.mesh;
+  const int n = mesh.elementCount();
+  report.maxArea = meshed.maxArea;
+  report.elementSize = meshed.sizing.edge;
+  report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
+  report.elementsBeforeRefinement = n;
+  report.times.mesh = since(t);
+
+  // Which elements stayed put; the region of the edit: the moved or added elements where they
+  // are now, and the kept elements no longer there where they were.
+  const std::vector<int> match = matchElements(kept, mesh);
+  std::vector<int> newIndexOfOld(kept.area.size(), -1);
+  std::vector<std::array<Eigen::Vector3d, 3>> region;
+  for (int e = 0; e < n; ++e) {
+    if (match[static_cast<size_t>(e)] >= 0)
+      newIndexOfOld[static_cast<size_t>(match[static_cast<size_t>(e)])] = e;
+    else
+      region.push_back(mesh.corners(e));
+  }
+  SolveReport::Update& update = report.update;
+  update.keptFactors = keptPath;
+  update.moved = static_cast<int>(region.size());
+  for (size_t i = 0; i < newIndexOfOld.size(); ++i)
+    if (newIndexOfOld[i] < 0) {
+      region.push_back(kept.corners[i]);
+      ++update.removed;
+    }
+  logInfo("update: " + std::to_string(n) + " elements, " + std::to_string(update.moved) +
+          " moved or added, " + std::to_string(update.removed) + " moved or removed");
+
+  t = Clock::now();
+  const RayCaster rays(mesh, solution.scene);
+  report.times.bvh = since(t);
+  const ElementExposure exposure = solveExposure(options, mesh, rays);
+  report.exposureProbeRays = exposure.probeRays();
+  solution.problem = makeProblem(solution.scene, mesh, &exposure);
+  std::vector<int> rayMultipliers;
+  std::shared_ptr<KeptFactors> next = keepLightsApart(solution, rays, options, exposure,
+                                                      meshed.sizing.edge, rayMultipliers, report);
+
+  // Rows: a kept row is reused when its element stayed put with the same exposed area and ray
+  // budget and none of its rays meets the edit's region.
+  FormFactorStage formFactors(solution.scene, mesh, rays, solution.problem, options, &exposure,
+                              rayMultipliers);
+  const TriangleSetCaster edit(region, rays.centre());
+  std::vector<char> reuse(static_cast<size_t>(n), 0), meets(static_cast<size_t>(n), 0);
+  std::vector<FormFactorRow> rows(static_cast<size_t>(n));
+  t = Clock::now();
+  std::vector<int> candidates;
+  for (int e = 0; e < n; ++e) {
+    const int old = match[static_cast<size_t>(e)];
+    if (old < 0) continue;
+    const double a = solution.problem.area[e], b = kept.area[static_cast<size_t>(old)];
+    if (std::abs(a - b) > 1e-9 * std::max(a, b) ||
+        rayMultipliers[e] != kept.rayMultiplier[static_cast<size_t>(old)]) {
+      ++update.rowsOtherChange;
+      continue;
+    }
+    candidates.push_back(e);
+  }
+  uint64_t testedRays = 0;
+  for (int e : candidates) testedRays += formFactors.hemisphere().raysForRow(e);
+  Progress progress("rays tested against the edit", testedRays, "rays");
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, candidates.size(), 16),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t k = range.begin(); k != range.end(); ++k) {
+                        const int e = candidates[k];
+                        meets[static_cast<size_t>(e)] = formFactors.hemisphere().rowMeets(e, edit);
+                        progress.advance(formFactors.hemisphere().raysForRow(e));
+                      }
+                    });
+  progress.finish(std::to_string(candidates.size()) + " rows");
+  for (int e : candidates) {
+    if (meets[static_cast<size_t>(e)]) {
+      ++update.rowsMeetingEdit;
+      continue;
+    }
+    FormFactorRow row = kept.rows[static_cast<size_t>(match[static_cast<size_t>(e)])];
+    if (!renumber(row, newIndexOfOld)) {
+      ++update.rowsMeetingEdit;
+      continue;
+    }
+    rows[static_cast<size_t>(e)] = std::move(row);
+    reuse[static_cast<size_t>(e)] = 1;
+    ++update.rowsReused;
+  }
+  const double testSeconds = since(t);
+  logInfo("update: " + std::to_string(update.rowsReused) + " rows reused, " +
+          std::to_string(n - update.rowsReused) + " cast again (" + std::to_string(update.moved) +
+          " moved or new, " + std::to_string(update.rowsMeetingEdit) +
+          " whose rays meet the edit, " + std::to_string(update.rowsOtherChange) +
+          " with another exposed area or ray budget); rays tested in " + formatNumber(testSeconds) +
+          " s");
+  formFactors.adoptRows(std::move(rows), reuse);
+  next->rows = formFactors.takeAllRows();
+  next->fingerprint = keptFactorsFingerprint(solution.scene, options);
+  next->options = options;
+
+  // Solve from the previous solution: unchanged where the edit changed nothing.
+  t = Clock::now();
+  std::vector<Rgb> guess = solution.problem.emission;
+  for (int e = 0; e < n; ++e)
+    if (match[static_cast<size_t>(e)] >= 0) guess[e] = previous[match[static_cast<size_t>(e)]];
+  KeptRows keptRows(*next);
+  const std::unique_ptr<Solver> solver = makeSolver(options.solver, solution.problem, keptRows,
+                                                    [&] { return keptRowsMatrix(next->rows); });
+  auto* gathering = dynamic_cast<GatheringSolver*>(solver.get());
+  RAD_CHECK(gathering != nullptr);
+  gathering->startFrom(std::move(guess));
+  const IterationLimits limits = iterationLimits(options, n, start);
+  report.stoppedBy = iterate(*solver, limits);
+  report.converged = converged(report.stoppedBy);
+  solution.radiosity = solver->solution();
+  reportSolver(*solver, report);
+  formFactors.report(report, options.solver);
+  report.shooters = n;
+  report.times.solve = since(t);
+  report.times.total = since(start);
+  result.kept = std::move(next);
+  return result;
+}
+
+SolveOptions updatedSolutionOptions(const KeptFactors& kept, const SolveResult& updated) {
+  const SolveOptions& fixed = updated.kept->options;
+  const PatchMesh& mesh = *updated.solution.mesh;
+  const ElementSizing userRule =
+      decideElementSize(kept.options, mesh.totalArea(), mesh.boundsDiagonal());
+  if (userRule.rule == ElementSizeRule::Elements ||
+      std::abs(userRule.edge - kept.elementEdge) > 1e-9 * kept.elementEdge)
+    return fixed;
+  SolveOptions own = kept.options;
+  own.scenePath = fixed.scenePath;
+  own.lights = fixed.lights;
+  own.solver = fixed.solver;
+  own.tolerance = fixed.tolerance;
+  own.maxIterations = fixed.maxIterations;
+  own.threads = fixed.threads;
+  own.outputDir = fixed.outputDir;
+  return own;
+}
+
+}  // namespace rad

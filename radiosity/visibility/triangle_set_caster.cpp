@@ -1,0 +1,85 @@
+#include "radiosity/visibility/triangle_set_caster.h"
+
+#include <limits>
+#include <string>
+
+#include "radiosity/core/errors.h"
+
+namespace rad {
+
+TriangleSetCaster::TriangleSetCaster(const std::vector<std::array<Eigen::Vector3d, 3>>& triangles,
+                                     const Eigen::Vector3d& centre) {
+  if (triangles.empty()) return;  // meets nothing
+  device_ = rtcNewDevice(nullptr);
+  if (!device_) throw RuntimeFailure("cannot create the Embree device");
+  scene_ = rtcNewScene(device_);
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* indices = static_cast<unsigned*>(
+      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                              3 * sizeof(unsigned), triangles.size()));
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                               3 * triangles.size()));
+  if (!indices || !vertices) {
+    rtcReleaseGeometry(geometry);
+    release();
+    throw RuntimeFailure("allocating the moved geometry's buffers failed");
+  }
+  for (size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d p = triangles[t][k] - centre;  // as RayCaster converts its vertices
+      for (int d = 0; d < 3; ++d) vertices[9 * t + 3 * k + d] = static_cast<float>(p[d]);
+      indices[3 * t + k] = static_cast<unsigned>(3 * t + k);
+    }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene_, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene_);
+  if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) {
+    release();
+    throw RuntimeFailure("building the BVH of the moved geometry failed");
+  }
+}
+
+TriangleSetCaster::~TriangleSetCaster() { release(); }
+
+void TriangleSetCaster::release() {
+  if (scene_) rtcReleaseScene(scene_);
+  if (device_) rtcReleaseDevice(device_);
+  scene_ = nullptr;
+  device_ = nullptr;
+}
+
+void TriangleSetCaster::distances(int count, const float* const origin[3],
+                                  const float* const direction[3], float* distance) const {
+  if (!scene_) {
+    for (int k = 0; k < count; ++k) distance[k] = std::numeric_limits<float>::infinity();
+    return;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit;
+  rayHit.ray.time = 0.0f;
+  rayHit.ray.mask = 0xFFFFFFFFu;
+  rayHit.ray.id = 0;
+  rayHit.ray.flags = 0;
+  for (int k = 0; k < count; ++k) {
+    rayHit.ray.org_x = origin[0][k];
+    rayHit.ray.org_y = origin[1][k];
+    rayHit.ray.org_z = origin[2][k];
+    rayHit.ray.dir_x = direction[0][k];
+    rayHit.ray.dir_y = direction[1][k];
+    rayHit.ray.dir_z = direction[2][k];
+    rayHit.ray.tnear = 0.0f;
+    rayHit.ray.tfar = std::numeric_limits<float>::infinity();
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &rayHit);
+    distance[k] = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID
+                      ? rayHit.ray.tfar
+                      : std::numeric_limits<float>::infinity();
+  }
+}
+
+}  // namespace rad

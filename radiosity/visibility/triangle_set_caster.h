@@ -1,0 +1,37 @@
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+namespace rad {
+
+// A small BVH over a set of triangles, asked only whether a ray meets any of them: `update`'s
+// test of which form-factor rays pass through what moved (the old and new places of the edited
+// geometry). Triangles are stored as RayCaster stores its own, in float relative to the same
+// `centre`, so rays in that caster's frame (its closestHits arrays) are tested as they are cast.
+// Every triangle is hit from both sides. Thread-safe for queries once constructed.
+class TriangleSetCaster {
+ public:
+  TriangleSetCaster(const std::vector<std::array<Eigen::Vector3d, 3>>& triangles,
+                    const Eigen::Vector3d& centre);
+  ~TriangleSetCaster();
+  TriangleSetCaster(const TriangleSetCaster&) = delete;
+  TriangleSetCaster& operator=(const TriangleSetCaster&) = delete;
+
+  bool empty() const { return scene_ == nullptr; }
+  // For each ray (origins and directions in the caster's frame, as RayCaster::closestHits takes
+  // them), the distance ahead of its origin to the first triangle it meets, in units of its
+  // direction's length; infinite when it meets none.
+  void distances(int count, const float* const origin[3], const float* const direction[3],
+                 float* distance) const;
+
+ private:
+  void release();
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+};
+
+}  // namespace rad
