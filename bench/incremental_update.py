@@ -29,8 +29,8 @@ LIGHTS = ["--sky", "0.35", "0.45", "0.65", "--sun", "0.3", "-1", "0.25", "8", "7
 
 
 def crate(x0, y0, z0, size, first_vertex):
-    """OBJ lines of a closed cube (outward faces) with its own group and material."""
-    lines = ["g crate", "usemtl default"]
+    """OBJ lines of a closed cube (outward faces) in its own group."""
+    lines = ["g crate"]  # Sponza has no MTL: the default material, as the rest
     corners = [(x0 + dx * size, y0 + dy * size, z0 + dz * size)
                for dx in (0, 1) for dy in (0, 1) for dz in (0, 1)]
     lines += ["v %.6f %.6f %.6f" % c for c in corners]

@@ -36,6 +36,7 @@
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "viewer/convergence_chart.h"
+#include "viewer/probe_polydata.h"
 #include "viewer/solution_polydata.h"
 #include "viewer/viewer_style.h"
 
@@ -102,6 +103,7 @@ std::string SolutionViewer::keyHelp() {
          "p        pick the element under the cursor: print it, draw its form-factor rays\n"
          "l        draw the rays of the last shot\n"
          "x        clear the rays\n"
+         "i        light probes on/off (view DIR with probes.bin, or --probes FILE)\n"
          "space    one solver step (a shot, sweep or bounce)\n"
          "g        run / pause the solver\n"
          "b        restart the solver from B = E\n"
@@ -153,6 +155,13 @@ void SolutionViewer::build() {
   rays_->GetProperty()->SetOpacity(0.7);
   rays_->VisibilityOff();
   scene_->AddActor(rays_);
+
+  // The probes' colours are their own shading (a white diffuse ball under the probe's light).
+  probes_ = vtkSmartPointer<vtkActor>::New();
+  probes_->SetMapper(vtkSmartPointer<vtkPolyDataMapper>::New());
+  probes_->GetProperty()->LightingOff();
+  probes_->VisibilityOff();
+  scene_->AddActor(probes_);
 
   scalarBar_ = vtkSmartPointer<vtkScalarBarActor>::New();
   scalarBar_->SetNumberOfLabels(5);
@@ -352,6 +361,11 @@ void SolutionViewer::refreshStatus() {
   } else {
     s << " | saved solution";
   }
+  if (probeCount_ > 0) {
+    s << " | " << probeCount_ << " probes";
+    if (probesInside_ > 0) s << " (" << probesInside_ << " inside, hidden)";
+    if (!probes_->GetVisibility()) s << " off";
+  }
   if (!lastMessage_.empty()) s << "\n" << lastMessage_;
   status_->SetInput(s.str().c_str());
 }
@@ -426,9 +440,11 @@ void SolutionViewer::printElement(int element) const {
 void SolutionViewer::pickAt(int x, int y) {
   // Pick what is drawn (a hardware selection honours back-face culling, a ray picker would
   // return the invisible near wall of a room), on the mesh alone.
-  const bool rays = rays_->GetVisibility(), outlines = outlines_->GetVisibility();
+  const bool rays = rays_->GetVisibility(), outlines = outlines_->GetVisibility(),
+             probes = probes_->GetVisibility();
   rays_->VisibilityOff();
   outlines_->VisibilityOff();
+  probes_->VisibilityOff();
   auto selector = vtkSmartPointer<vtkHardwareSelector>::New();
   selector->SetRenderer(scene_);
   selector->SetArea(x, y, x, y);
@@ -437,6 +453,7 @@ void SolutionViewer::pickAt(int x, int y) {
   selection.TakeReference(selector->Select());
   rays_->SetVisibility(rays);
   outlines_->SetVisibility(outlines);
+  probes_->SetVisibility(probes);
   int element = -1;
   for (unsigned i = 0; selection && i < selection->GetNumberOfNodes() && element < 0; ++i) {
     vtkSelectionNode* node = selection->GetNode(i);
@@ -499,6 +516,11 @@ bool SolutionViewer::handleKey(const std::string& key, int x, int y) {
       showRows(live_->lastShooter());
   } else if (key == "x") {
     setRays({});
+  } else if (key == "i") {
+    if (probeCount_ == 0)
+      say("no light probes: view DIR shows DIR/probes.bin (solve --probes), or use --probes FILE");
+    else
+      probes_->SetVisibility(!probes_->GetVisibility());
   } else if (key == "space") {
     if (live_->converged())
       say("converged: press b to restart from B = E");
@@ -553,6 +575,25 @@ void SolutionViewer::screenshot(const std::string& pngPath) {
   file.commit();
   logInfo("wrote " + pngPath + " (" + std::to_string(options_.width) + "x" +
           std::to_string(options_.height) + ")");
+}
+
+void SolutionViewer::setProbes(const std::vector<ProbeSh>& probes) {
+  double bounds[6];
+  solution_->GetBounds(bounds);
+  const double diagonal =
+      Eigen::Vector3d(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]).norm();
+  const double radius = probeSphereRadius(probes, 0.02 * diagonal);
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(probes_->GetMapper());
+  mapper->SetInputData(
+      makeProbePolyData(probes, radius, toneMap_, probeSphereSegments(probes.size())));
+  mapper->SetColorModeToDirectScalars();
+  mapper->SetScalarModeToUsePointData();
+  mapper->ScalarVisibilityOn();
+  probeCount_ = static_cast<int>(probes.size());
+  probesInside_ = 0;
+  for (const ProbeSh& p : probes) probesInside_ += p.inside;
+  probes_->SetVisibility(probeCount_ > 0);
+  refreshStatus();
 }
 
 void SolutionViewer::interact() {

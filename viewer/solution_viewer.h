@@ -23,6 +23,7 @@ class vtkTextActor;
 namespace rad {
 
 class ConvergenceChart;
+struct ProbeSh;
 
 // The window split left to right into the 3D view, the scalar bar's strip and the convergence
 // panel, as fractions of the window's width (SolutionViewer::layoutFor states the rule).
@@ -64,6 +65,9 @@ class SolutionViewer {
   void screenshot(const std::string& pngPath);
   // Opens the window and returns when it is closed.
   void interact();
+  // Shows light probes as spheres (probe_polydata.h: radiance probeIrradiance(n)/π under this
+  // viewer's tone map; probes inside geometry hidden); key i toggles them. Replaces any shown.
+  void setProbes(const std::vector<ProbeSh>& probes);
 
   // Key handling (viewer_style.cpp forwards keys, picks and timer ticks here).
   bool handleKey(const std::string& key, int x, int y);  // false: not ours
@@ -101,7 +105,8 @@ class SolutionViewer {
   vtkSmartPointer<vtkRenderer> scene_, barStrip_;
   int laidOut_[2] = {0, 0};  // the window size layout() last saw
   vtkSmartPointer<vtkPolyDataMapper> meshMapper_;
-  vtkSmartPointer<vtkActor> mesh_, outlines_, rays_;
+  vtkSmartPointer<vtkActor> mesh_, outlines_, rays_, probes_;
+  int probeCount_ = 0, probesInside_ = 0;
   vtkSmartPointer<vtkScalarBarActor> scalarBar_;
   vtkSmartPointer<vtkTextActor> help_, status_;
   ConvergenceChart* chart_ = nullptr;

@@ -25,6 +25,7 @@
 #include "radiosity/output/image_io.h"
 #include "radiosity/output/lightmap_bake.h"
 #include "radiosity/output/lightmap_baked_mesh.h"
+#include "radiosity/output/lightmap_confidence.h"
 #include "radiosity/output/lightmap_content.h"
 #include "radiosity/output/obj_export.h"
 #include "radiosity/output/vertex_colors_ply.h"
@@ -32,6 +33,7 @@
 #include "radiosity/pipeline/resource_limits.h"
 #include "radiosity/pipeline/solution_source.h"
 #include "radiosity/pipeline/solution_tone_map.h"
+#include "radiosity/render/directional_lightmap.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/lightmap_uv_check.h"
@@ -57,6 +59,8 @@ struct BakeOptions {
   std::string solutionDir;         // --solution: reuse the solution `solve` saved there
   std::optional<double> exposure;  // --exposure: fixed instead of automatic
   LightmapContent content = LightmapContent::Radiance;  // --lightmap-content
+  bool directional = false;  // --directional: L1 SH texels beside the lightmap
+  int directionalRays = 64;  // --directional-rays: hemisphere rays per texel
 };
 
 double since(std::chrono::steady_clock::time_point t) {
@@ -112,9 +116,85 @@ std::string lightmapFileName(int page, int pages, const std::string& extension) 
                     : "lightmap_" + std::to_string(page) + "." + extension;
 }
 
+// The confidence map (docs/baking.md, "How far to trust each texel"): per page, the estimated
+// absolute error of each texel's value per channel (W·m⁻²·sr⁻¹), rasterised and dilated like
+// the values. Without a gather: the mesh's displayed error (displayedError, the refinement's
+// estimate) of what the texel interpolates, scaled as bakePages forms the value: the radiance's
+// own; the light arriving (H/π) times the texel's ρ where a texture multiplies it; H/π's alone
+// for irradiance content. With --gather: the gather's standard error (`gatherError`, per page and
+// texel; ÷ ρ for irradiance content). The gather reads the solution one bounce away, averaged
+// over many elements, so the mesh's displayed error does not apply there. Left out: the
+// solution's own error (its form-factor rays' noise, its elements' means) where it reaches the
+// texel through the gathered light, or through the interpolated values.
+std::vector<Lightmap> confidencePages(const Solution& solution, const LightmapLayout& layout,
+                                      const VertexInterpolation& interpolation,
+                                      const std::vector<Rgb>& vertexValues, int dilation,
+                                      LightmapContent content,
+                                      const std::vector<std::vector<Rgb>>& gatherError) {
+  const PatchMesh& mesh = *solution.mesh;
+  const Scene& scene = solution.scene;
+  const bool irradiance = content == LightmapContent::Irradiance;
+  const bool textured = irradiance || !scene.textures.empty();
+  const int n = mesh.elementCount();
+  std::vector<Rgb> radianceError, incidentError;
+  if (gatherError.empty()) {
+    std::vector<Rgb> radiance(n);
+    for (int e = 0; e < n; ++e) radiance[e] = solution.radiosity[e] / M_PI;
+    std::vector<std::array<Rgb, 3>> points = solution.pointRadiosity;
+    for (auto& p : points)
+      for (Rgb& b : p) b = b / M_PI;
+    radianceError = displayedError(mesh, radiance, points);
+    if (textured) {
+      std::vector<Rgb> incident(n);
+      for (int e = 0; e < n; ++e)
+        incident[e] = incidentLight(solution.radiosity[e], M_PI * elementEmission(scene, mesh, e),
+                                    solution.problem.reflectance[e]) /
+                      M_PI;
+      incidentError = displayedError(mesh, incident);
+    }
+  }
+  auto overRho = [](Rgb v, const Rgb& rho) {
+    for (int c = 0; c < 3; ++c) v[c] = rho[c] > 0 ? v[c] / rho[c] : 0;
+    return v;
+  };
+  std::vector<Lightmap> pages;
+  for (int page = 0; page < layout.pages; ++page)
+    pages.push_back(bakeLightmap(
+        mesh, layout, interpolation, vertexValues, dilation,
+        [&](int e, const Eigen::Vector3d& b, size_t texel) -> Rgb {
+          if (!gatherError.empty()) {
+            const Rgb& error = gatherError[page][texel];
+            return irradiance ? overRho(error, reflectanceAt(scene, mesh, e, b[1], b[2])) : error;
+          }
+          if (irradiance) return incidentError[e];
+          if (textured && hasReflectanceTexture(scene, mesh, e))
+            return reflectanceAt(scene, mesh, e, b[1], b[2]) * incidentError[e];
+          return radianceError[e];
+        },
+        page));
+  return pages;
+}
+
+// --directional's rules, before anything is solved or written.
+void checkDirectionalOptions(const CLI::App& command, const BakeOptions& o) {
+  if (command.count("--directional-rays") > 0 && !o.directional)
+    throw InputError(
+        "--directional-rays sets the rays of --directional's texels: add --directional");
+  if (!o.directional) return;
+  if (o.noLightmap)
+    throw InputError(
+        "--directional with --no-lightmap: the directional texels are lightmap pages beside "
+        "lightmap.exr; drop --no-lightmap");
+  if (o.solve.lightGroups)
+    throw InputError(
+        "--directional with --light-groups: the directional texels hold the whole scene's light, "
+        "not one layer per group; bake the groups and the directional lightmap separately");
+}
+
 void runBake(const CLI::App& command, BakeOptions& o) {
   finishSolveOptions(command, o.solve, o.solverName);
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
+  checkDirectionalOptions(command, o);
   if (o.solve.lightGroups && o.gather > 0)
     throw InputError(
         "--gather with --light-groups: the per-texel gather samples every light at once, so it "
@@ -175,7 +255,10 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                             {"solve_seconds", result.report.times.total},
                             {"reused_saved_solution", result.report.reusedSavedSolution}};
   std::vector<Lightmap> lightmaps;                    // one per page
+  std::vector<Lightmap> errorPages;                   // the confidence map, one per page
   std::vector<std::vector<Lightmap>> layerLightmaps;  // per light group, one per page
+  // --directional: the L1 SH pages, one per page.
+  std::vector<DirectionalLightmapPage> directionalPages;
   BakedLook look;
   if (!o.noLightmap) {
     auto t = std::chrono::steady_clock::now();
@@ -195,12 +278,15 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     std::unique_ptr<const RayCaster> caster;
     std::unique_ptr<const RenderScene> view;
     std::unique_ptr<const FinalGather> gather;
+    std::vector<std::vector<Rgb>> gatherError;  // per page and texel: the gather's standard error
     const bool textured = irradiance || !solution.scene.textures.empty();
     if (o.gather > 0) {
       caster = std::make_unique<const RayCaster>(mesh, solution.scene);
       view = std::make_unique<const RenderScene>(solution.scene, mesh, *caster);
       gather = std::make_unique<const FinalGather>(*view, solution.radiosity,
                                                    FinalGatherOptions{o.gather, 16});
+      gatherError.assign(layout.pages,
+                         std::vector<Rgb>(static_cast<size_t>(layout.width) * layout.height));
     }
     // The pages of one solution (the whole, or one light group's layer with its own emitters'
     // Le): every step is linear in B and Le, so the layers' pages add up to the whole's.
@@ -225,7 +311,9 @@ void runBake(const CLI::App& command, BakeOptions& o) {
               [&](int e, const Eigen::Vector3d& b, size_t texel) {
                 Rng rng(streamKey(seed, 0x6c6d6170ull + page, texel));  // per texel and page
                 RayCounts counts;
-                const Rgb out = gather->outgoingRadiance(e, b, rng, counts);
+                Rgb standardError;  // for the confidence map
+                const Rgb out = gather->outgoingRadiance(e, b, rng, counts, standardError);
+                gatherError[page][texel] = standardError;
                 // Gathered at the texel with its own ρ: divide that one out.
                 const Rgb& texelLe = solution.scene.materials[mesh.material(e)].emission;
                 return irradiance ? incidentLight(out, texelLe, texelRho(e, b)) : out;
@@ -254,6 +342,33 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       return pages;
     };
     lightmaps = bakePages(solution.radiosity, vertexRadiance, elementLe);
+    {
+      // The confidence map: the "error" channel of lightmap.exr, and its summary.
+      const auto confidenceStart = std::chrono::steady_clock::now();
+      errorPages = confidencePages(solution, layout, interpolation, vertexRadiance, o.dilation,
+                                   o.content, gatherError);
+      const ConfidenceSummary c = summariseConfidence(lightmaps, errorPages);
+      const std::string includes =
+          o.gather > 0
+              ? "the per-texel gather's Monte Carlo standard error (shadow and gather rays)"
+              : "the mesh's displayed error (the interpolated values against the "
+                "solution, the refinement's estimate)";
+      logInfo("lightmap confidence: " + describeConfidence(c) + "; " + includes);
+      summary["confidence"] = {
+          {"exr_channel", "error"},
+          {"unit",
+           "estimated absolute error of the texel's luminance (Rec. 709 of the per-channel "
+           "errors), in the unit of the lightmap"},
+          {"includes", includes},
+          {"left_out",
+           "the solution's own error (form-factor ray noise, element means) where it "
+           "reaches the texel through the interpolated or gathered light"},
+          {"texels", c.texels},
+          {"median_relative_error", c.medianRelative},
+          {"p95_relative_error", c.p95Relative},
+          {"fraction_above_10_percent", c.fractionAbove10Percent},
+          {"seconds", since(confidenceStart)}};
+    }
     for (const Lightmap& page : lightmaps)
       look.lightmapPages.push_back(encodePng(page.radiance, toneMap));
     for (size_t g = 0; g < solution.layers.size(); ++g) {
@@ -302,6 +417,32 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                            {"bake_seconds", since(t)},
                            {"content", lightmapContentName(o.content)},
                            {"unit", lightmapContentMeaning(o.content)}};
+    if (o.directional) {
+      // L1 SH of the incident radiance per texel, beside the lightmap
+      // (render/directional_lightmap).
+      t = std::chrono::steady_clock::now();
+      if (!view) {
+        caster = std::make_unique<const RayCaster>(mesh, solution.scene);
+        view = std::make_unique<const RenderScene>(solution.scene, mesh, *caster);
+      }
+      nlohmann::json names = nlohmann::json::array();
+      for (int page = 0; page < layout.pages; ++page) {
+        directionalPages.push_back(bakeDirectionalPage(*view, solution.radiosity, layout,
+                                                       interpolation, o.dilation, page,
+                                                       o.directionalRays, o.solve.seed));
+        for (const char* k : directionalCoefficientNames())
+          names.push_back(directionalFileName(page, layout.pages, std::string(k) + ".exr"));
+        names.push_back(directionalFileName(page, layout.pages, "direction.png"));
+      }
+      summary["directional"] = {{"files", names},
+                                {"rays", o.directionalRays},
+                                {"convention", kDirectionalConvention},
+                                {"unit", "W/m^2 (coefficients of radiance in W/(m^2 sr))"},
+                                {"seconds", since(t)}};
+      logInfo("directional lightmap: L1 SH of the incident light, " +
+              std::to_string(o.directionalRays) + " rays per texel, " + formatNumber(since(t)) +
+              " s");
+    }
   } else {
     summary["skipped"] = {
         {{"what", "lightmap, scene_baked.obj"}, {"why", "--no-lightmap: vertex colours only"}}};
@@ -380,6 +521,11 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                  static_cast<std::streamsize>(png.size()));
     }
   }
+  for (size_t page = 0; page < directionalPages.size(); ++page) {
+    const std::vector<std::uint8_t> png = encodePng(directionalPages[page].direction, ToneMap{1});
+    open(directionalFileName(static_cast<int>(page), layout.pages, "direction.png"), true)
+        .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  }
   if (!o.noLightmap) {
     std::ostream& obj = open("scene_baked.obj", false);
     writeBakedObj(obj, open("scene_baked.mtl", false), baked, "scene_baked.mtl", pngNames);
@@ -389,11 +535,17 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   // The EXR library writes by name (atomically on its own): last, so a failure before it leaves
   // nothing behind.
   for (int page = 0; page < static_cast<int>(lightmaps.size()); ++page)
-    writeExr((dir / lightmapFileName(page, layout.pages, "exr")).string(),
-             lightmaps[page].radiance);
+    writeExr((dir / lightmapFileName(page, layout.pages, "exr")).string(), lightmaps[page].radiance,
+             {{"error", errorChannel(errorPages[page])}});
   for (size_t g = 0; g < layerLightmaps.size(); ++g)
     for (int page = 0; page < static_cast<int>(layerLightmaps[g].size()); ++page)
       writeExr((dir / look.layers[g].exrFiles[page]).string(), layerLightmaps[g][page].radiance);
+  for (size_t page = 0; page < directionalPages.size(); ++page)
+    for (int k = 0; k < 4; ++k)
+      writeExr((dir / directionalFileName(static_cast<int>(page), layout.pages,
+                                          std::string(directionalCoefficientNames()[k]) + ".exr"))
+                   .string(),
+               directionalPages[page].coefficients[k].radiance);
   for (auto& f : files) f->commit();
   logInfo("baked " + o.solve.scenePath + " into " + o.solve.outputDir + " in " +
           std::to_string(since(start)) + " s after the solve");
@@ -466,6 +618,14 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
                  "file's \"group\"; --sky, --sun): group_NAME_lightmap.exr/.png and "
                  "group_NAME_vertex_colors.ply beside the whole, and _LIGHT_GROUP_i in the glb, "
                  "so an engine can dim or recolour each group without a re-bake");
+  bake->add_flag("--directional", o->directional,
+                 "Directional lightmaps for normal-mapped surfaces: per texel the L1 spherical "
+                 "harmonics of the incident light (lightmap_sh_L0/L1x/L1y/L1z.exr, world axes, "
+                 "W/m^2) and lightmap_direction.png; see docs/baking.md");
+  bake->add_option("--directional-rays", o->directionalRays,
+                   "Hemisphere rays per texel of --directional")
+      ->default_val(o->directionalRays)
+      ->check(CLI::Range(1, 65536));
   bake->add_option("--solution", o->solutionDir,
                    "Reuse the solution `radiosity solve` wrote into this directory (same scene and "
                    "solve options) instead of solving");

@@ -14,6 +14,7 @@
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/solution_source.h"
 #include "radiosity/pipeline/solution_tone_map.h"
+#include "radiosity/render/light_probes.h"
 #include "radiosity/scene/camera.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/solvers/gathering_solvers.h"
@@ -106,7 +107,27 @@ struct ViewArgs {
   int raysOf = -1;
   int stopAfter = -1;
   std::string solutionDir;  // --solution: show the solution `solve` saved there
+  std::string probes;       // --probes FILE: a probes.bin to show
+  bool noProbes = false;
 };
+
+// The light probes to show: --probes FILE, else DIR/probes.bin when the solution directory (view
+// DIR, or --solution DIR) has one; none with --no-probes. A bad file is an InputError naming it.
+std::vector<ProbeSh> loadViewProbes(const ViewArgs& args, const std::string& solutionDir) {
+  if (args.noProbes) return {};
+  std::string path = args.probes;
+  if (path.empty() && !solutionDir.empty()) {
+    const std::filesystem::path inDir = std::filesystem::path(solutionDir) / "probes.bin";
+    if (std::filesystem::is_regular_file(inDir)) path = inDir.string();
+  }
+  if (path.empty()) return {};
+  std::vector<ProbeSh> probes = readProbesBinary(path);
+  int inside = 0;
+  for (const ProbeSh& p : probes) inside += p.inside;
+  logInfo("light probes: " + std::to_string(probes.size()) + " from " + path + " (" +
+          std::to_string(inside) + " inside geometry, hidden; key i toggles them)");
+  return probes;
+}
 
 void parseSize(const std::string& text, ViewerOptions& view) {
   std::smatch m;
@@ -144,8 +165,10 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
   view.title = "radiosity view " + args.input;
   requireDisplay(!args.screenshot.empty());
 
+  std::vector<ProbeSh> probes;
   auto show = [&](vtkSmartPointer<vtkPolyData> data, ToneMap toneMap, LiveSolution* live) {
     SolutionViewer viewer(std::move(data), toneMap, live, view);
+    if (!probes.empty()) viewer.setProbes(probes);
     if (!args.screenshot.empty())
       viewer.screenshot(args.screenshot);
     else
@@ -167,6 +190,7 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
                        "saved solve over its scene)");
     const std::string path = (std::filesystem::path(args.input) / "solution.vtp").string();
     vtkSmartPointer<vtkPolyData> data = readSolutionVtp(path);
+    probes = loadViewProbes(args, args.input);
     cameraFor(solutionSceneFile(data));
     if (args.raysOf >= 0)
       logWarning("--rays-of: a saved solution has no form factors; open the scene to see rays");
@@ -179,6 +203,7 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
 
   options.scenePath = args.input;
   finishSolveOptions(command, options, solverName);
+  probes = loadViewProbes(args, args.solutionDir);  // before the solve: a bad file fails at once
   const SolveResult result =
       solveOrReuse(loadScene(options.scenePath, options.lights, options.twoSided), options,
                    {args.solutionDir, ""});
@@ -241,6 +266,11 @@ void registerViewCommand(CLI::App& app, CommandAction& run) {
   view->add_option("--solution", args->solutionDir,
                    "Show the solution `radiosity solve` saved in this directory for the scene "
                    "(same solve options) instead of solving");
+  auto* probes = view->add_option("--probes", args->probes,
+                                  "Show the light probes of this probes.bin (solve --probes) as "
+                                  "spheres; default: DIR/probes.bin of view DIR or --solution DIR");
+  view->add_flag("--no-probes", args->noProbes, "Do not read or show light probes")
+      ->excludes(probes);
   addSolveOptions(*view, *options, *solverName);
   addCommonFlags(*view);
   view->callback([&run, view, options, solverName, args] {

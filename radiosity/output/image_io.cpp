@@ -22,13 +22,22 @@
 
 namespace rad {
 
-void writeExr(const std::string& path, const ImageRgb& image) {
+void writeExr(const std::string& path, const ImageRgb& image) { writeExr(path, image, {}); }
+
+void writeExr(const std::string& path, const ImageRgb& image,
+              const std::vector<ExrChannel>& extra) {
   const int w = image.width, h = image.height;
   std::vector<float> channels[3];
   for (int c = 0; c < 3; ++c) {
     channels[c].resize(static_cast<size_t>(w) * h);
     for (size_t i = 0; i < channels[c].size(); ++i)
       channels[c][i] = static_cast<float>(image.pixels[i][c]);
+  }
+  for (const ExrChannel& channel : extra) {
+    RAD_CHECK_EQ(channel.values.size(), static_cast<size_t>(w) * h);
+    RAD_CHECK_MSG(
+        channel.name != "R" && channel.name != "G" && channel.name != "B" && !channel.name.empty(),
+        "writeExr: an extra channel needs a name of its own");
   }
   AtomicPath file(path);
   try {
@@ -40,6 +49,12 @@ void writeExr(const std::string& path, const ImageRgb& image) {
       frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(channels[c].data()),
                                         sizeof(float), sizeof(float) * w));
     }
+    for (const ExrChannel& channel : extra) {
+      header.channels().insert(channel.name, Imf::Channel(Imf::FLOAT));
+      // OpenEXR's slices take a writable base pointer; it only reads from it here.
+      char* base = reinterpret_cast<char*>(const_cast<float*>(channel.values.data()));
+      frame.insert(channel.name, Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * w));
+    }
     Imf::OutputFile out(file.tempPath().c_str(), header);
     out.setFrameBuffer(frame);
     out.writePixels(h);
@@ -47,6 +62,33 @@ void writeExr(const std::string& path, const ImageRgb& image) {
     throw RuntimeFailure("cannot write " + path + ": " + e.what());
   }
   file.commit();
+}
+
+std::vector<float> readExrChannel(const std::string& path, const std::string& name) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "cannot open EXR file");
+  try {
+    Imf::InputFile in(path.c_str());
+    const Imath::Box2i window = in.header().dataWindow();
+    const int w = window.max.x - window.min.x + 1, h = window.max.y - window.min.y + 1;
+    if (w <= 0 || h <= 0) throw InputError(path, 0, "EXR file has an empty data window");
+    if (!in.header().channels().findChannel(name))
+      throw InputError(path, 0, "EXR file has no '" + name + "' channel");
+    std::vector<float> values(static_cast<size_t>(w) * h);
+    char* base = reinterpret_cast<char*>(values.data()) -
+                 (static_cast<ptrdiff_t>(window.min.x) + static_cast<ptrdiff_t>(window.min.y) * w) *
+                     sizeof(float);
+    Imf::FrameBuffer frame;
+    frame.insert(name, Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * w));
+    in.setFrameBuffer(frame);
+    in.readPixels(window.min.y, window.max.y);
+    return values;
+  } catch (const InputError&) {
+    throw;
+  } catch (const CheckFailure&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(path, 0, std::string("not a readable EXR file: ") + e.what());
+  }
 }
 
 ImageRgb readExr(const std::string& path) {

@@ -163,7 +163,9 @@ LightInput lightInputFromJson(const nlohmann::json& j, const Reader& reader) {
       } else {
         const auto v = s.at("sun").get<std::vector<double>>();
         if (v.size() != 6) reader.fail("the header's sun shortcut needs 6 numbers");
-        input.shortcuts.push_back(sunLight({v[0], v[1], v[2]}, {v[3], v[4], v[5]}));
+        Light sun = sunLight({v[0], v[1], v[2]}, {v[3], v[4], v[5]});
+        sun.direction = {v[0], v[1], v[2]};  // normalised once already: not again, bit for bit
+        input.shortcuts.push_back(sun);
       }
     } catch (const InputError& e) {
       if (!e.file().empty()) throw;

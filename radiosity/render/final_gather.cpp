@@ -15,6 +15,18 @@
 namespace rad {
 namespace {
 
+// The variance of the mean of n samples of sum `sum` and sum of squares `squares`: s²/n, s² the
+// unbiased sample variance (the second moment itself for a single sample).
+Rgb varianceOfMean(const Rgb& sum, const Rgb& squares, int n) {
+  Rgb v;
+  if (n <= 0) return v;
+  for (int c = 0; c < 3; ++c) {
+    const double spread = squares[c] - sum[c] * sum[c] / n;
+    v[c] = n > 1 ? std::max(0.0, spread) / (double(n) * (n - 1)) : squares[c];
+  }
+  return v;
+}
+
 std::vector<double> exposedAreas(const PatchMesh& mesh, const ElementExposure& exposure) {
   std::vector<double> areas(mesh.elementCount());
   for (int e = 0; e < mesh.elementCount(); ++e)
@@ -151,13 +163,19 @@ Rgb FinalGather::lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts,
   return s.radiance * (cosX / lightPdf * misWeight(lightPdf, gathersPerLight * cosX / M_PI) / M_PI);
 }
 
-Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts) const {
+Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
+                             Rgb* variance) const {
   thread_local std::vector<Point2> points;
   const int n = lightRays();
   sampler.get2DArray(n, points);
-  Rgb sum;
+  Rgb sum, squares;
   const double gathersPerLight = double(options_.gatherRays) / n;
-  for (int k = 0; k < n; ++k) sum += lightSample(hit, points[k], counts, gathersPerLight);
+  for (int k = 0; k < n; ++k) {
+    const Rgb v = lightSample(hit, points[k], counts, gathersPerLight);
+    sum += v;
+    if (variance) squares += v * v;
+  }
+  if (variance) *variance += varianceOfMean(sum, squares, n);
   sum = sum / n;
   // The point, spot, directional and sky lights: the delta ones once (exact), the sun's disc and
   // the sky by n samples each, stratified, in the same MIS pair with the gather rays.
@@ -166,23 +184,31 @@ Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts&
   Rgb fromLights = lights.deltaIrradiance(scene_, hit, counts);
   for (int a = 0; a < lights.areaCount(); ++a) {
     sampler.get2DArray(n, points);
-    Rgb area;
-    for (int k = 0; k < n; ++k)
-      area += lights.sampleArea(a, scene_, hit, points[k], counts, gathersPerLight);
+    Rgb area, areaSquares;
+    for (int k = 0; k < n; ++k) {
+      const Rgb v = lights.sampleArea(a, scene_, hit, points[k], counts, gathersPerLight);
+      area += v;
+      if (variance) areaSquares += v * v;
+    }
+    if (variance) *variance += varianceOfMean(area, areaSquares, n) / (M_PI * M_PI);
     fromLights += area / n;
   }
   return sum + fromLights / M_PI;
 }
 
-Rgb FinalGather::gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts) const {
+Rgb FinalGather::gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
+                             Rgb* variance) const {
   thread_local std::vector<Point2> points;
   const int n = options_.gatherRays;
   sampler.get2DArray(n, points);
-  Rgb sum;
+  Rgb sum, squares;
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector3d d = cosineDirection(hit.normal, points[k].x, points[k].y);
-    sum += secondaryRadiance(hit, d, sampler.rng(), counts, true);
+    const Rgb v = secondaryRadiance(hit, d, sampler.rng(), counts, true);
+    sum += v;
+    if (variance) squares += v * v;
   }
+  if (variance) *variance += varianceOfMean(sum, squares, n);
   return sum /
          n;  // cosine-weighted mean of incoming radiance: times ρ it is the reflected radiance
 }
@@ -258,6 +284,12 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
 
 Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& barycentric, Rng& rng,
                                   RayCounts& counts) const {
+  Rgb unused;
+  return outgoingRadiance(element, barycentric, rng, counts, unused);
+}
+
+Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& barycentric, Rng& rng,
+                                  RayCounts& counts, Rgb& standardError) const {
   const PatchMesh& mesh = scene_.mesh();
   const auto c = mesh.corners(element);
   SurfaceHit hit;
@@ -270,11 +302,17 @@ Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& barycentri
   hit.front = true;
   hit.material = &scene_.material(element);
   const Material& m = *hit.material;
+  standardError = Rgb();
   if (m.isSpecular()) return {};
   if (hit.diffuse.maxComponent() == 0) return m.emission;
   RandomSampler sampler(rng);
-  return m.emission +
-         hit.diffuse * (directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts));
+  Rgb variance;
+  // The gather rays draw from the rng first, then the shadow rays: the order GCC gave the
+  // unsequenced sum `directLight(…) + gatherLight(…)` this was before, so bakes stay bit for bit.
+  const Rgb gathered = gatherLight(hit, sampler, counts, &variance);
+  const Rgb direct = directLight(hit, sampler, counts, &variance);
+  for (int k = 0; k < 3; ++k) standardError[k] = hit.diffuse[k] * std::sqrt(variance[k]);
+  return m.emission + hit.diffuse * (direct + gathered);
 }
 
 Rgb FinalGather::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,

@@ -46,13 +46,21 @@ class FinalGather : public Integrator {
   // light), rho the texel there. Mirrors and glass hold no radiance of their own here: 0.
   Rgb outgoingRadiance(int element, const Eigen::Vector3d& barycentric, Rng& rng,
                        RayCounts& counts) const;
+  // The same value (bit for bit, from the same rng), and per channel the standard error of that
+  // Monte Carlo estimate: ρ·√(Σ s²/n) over its means (the shadow rays', each area light's, the
+  // gather rays'), s² the sample variance of the n samples of each. The samples are taken as
+  // independent; their n-rooks stratification can only lower the true error below this (up to
+  // a factor √(n/(n−1))). 0 where nothing is sampled (a delta light alone, ρ = 0).
+  Rgb outgoingRadiance(int element, const Eigen::Vector3d& barycentric, Rng& rng, RayCounts& counts,
+                       Rgb& standardError) const;
 
  private:
   Rgb interpolatedRadiance(const SurfaceHit& hit) const;  // B/π at the hit, from vertex values
-  Rgb directLight(const SurfaceHit& hit, Sampler& sampler,
-                  RayCounts& counts) const;  // ∫ L_e cos dω / π
-  Rgb gatherLight(const SurfaceHit& hit, Sampler& sampler,
-                  RayCounts& counts) const;  // mean incoming reflected L
+  // `variance`, when given, gains the variance of each estimate's mean (s²/n per channel).
+  Rgb directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
+                  Rgb* variance = nullptr) const;  // ∫ L_e cos dω / π
+  Rgb gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
+                  Rgb* variance = nullptr) const;  // mean incoming reflected L
   // One shadow ray to the point `u` picks on the emitters: its irradiance / π, MIS-weighted
   // against a cosine-sampled ray.
   // `gathersPerLight`: cosine rays per shadow ray in the MIS pair (power heuristic with counts).

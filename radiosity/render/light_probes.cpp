@@ -5,8 +5,10 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "radiosity/core/errors.h"
@@ -40,8 +42,7 @@ void addScaled(std::array<Rgb, 9>& c, const std::array<double, 9>& y, const Rgb&
 
 ProbeSh computeProbe(const RenderScene& view, const std::vector<Rgb>& radiosity,
                      const Eigen::Vector3d& x, int rays, uint64_t seed, uint64_t index,
-                     const std::vector<const Light*>& skies,
-                     const std::vector<const Light*>& deltas) {
+                     const ProbeLights& lights) {
   ProbeSh probe;
   probe.position = x;
   Rng rng(streamKey(seed, 0x50524f42, index));
@@ -50,40 +51,14 @@ ProbeSh computeProbe(const RenderScene& view, const std::vector<Rgb>& radiosity,
   int backHits = 0;
   for (int i = 0; i < rays; ++i) {
     const Eigen::Vector3d d = (rotation * fibonacciDirection(i, rays)).normalized();
-    const SurfaceHit hit = view.intersect(x, d);
-    Rgb radiance;
-    if (hit.hit()) {
-      if (hit.front)
-        radiance = radiosity.at(hit.element) / M_PI;
-      else
-        ++backHits;
-    } else {
-      for (const Light* sky : skies) radiance += skyRadiance(*sky, d);
-    }
+    bool back = false;
+    const Rgb radiance = probeRayRadiance(view, radiosity, lights, x, d, &back);
+    backHits += back;
     if (!radiance.isZero()) addScaled(probe.coefficients, shBasis(d), radiance * weight);
   }
   probe.inside = 2 * backHits > rays;
-  for (const Light* light : deltas) {
-    Eigen::Vector3d toLight;
-    Rgb irradiance;
-    if (light->type == LightType::Directional) {
-      toLight = -light->direction.normalized();
-      if (view.occludedAlong(x, toLight)) continue;
-      irradiance = light->irradiance;
-    } else {
-      toLight = light->position - x;
-      const double r2 = toLight.squaredNorm();
-      if (!(r2 > 0) || !std::isfinite(r2)) continue;
-      toLight /= std::sqrt(r2);
-      const double falloff = light->type == LightType::Spot
-                                 ? spotFalloff(*light, light->direction.normalized().dot(-toLight))
-                                 : 1.0;
-      if (!(falloff > 0)) continue;
-      if (view.occluded(x, light->position)) continue;
-      irradiance = light->intensity * (falloff / r2);
-    }
-    addScaled(probe.coefficients, shBasis(toLight), irradiance);
-  }
+  for (const DeltaLightArrival& a : deltaLightArrivals(view, lights, x))
+    addScaled(probe.coefficients, shBasis(a.toLight), a.irradiance);
   return probe;
 }
 
@@ -100,6 +75,20 @@ void putF32(std::ostream& out, double value) {
   std::memcpy(&bits, &f, 4);
   putU32(out, bits);
 }
+
+uint32_t getU32(const unsigned char* b) {
+  return uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
+}
+
+float getF32(const unsigned char* b) {
+  const uint32_t bits = getU32(b);
+  float f;
+  std::memcpy(&f, &bits, 4);
+  return f;
+}
+
+constexpr char kProbesMagic[] = "RADPRB01";
+constexpr size_t kProbesHeader = 12, kProbeBytes = 124;
 
 }  // namespace
 
@@ -119,24 +108,71 @@ std::array<double, 9> shBasis(const Eigen::Vector3d& direction) {
           c22 * (x * x - y * y)};
 }
 
-std::vector<ProbeSh> computeProbes(const RenderScene& view, const std::vector<Rgb>& radiosity,
-                                   const std::vector<Eigen::Vector3d>& points, int rays,
-                                   uint64_t seed) {
-  if (rays < 1) throw InputError("light probes need at least one ray each");
-  // Lights at infinity seen by the escaped rays, and those added analytically.
-  std::vector<const Light*> skies, deltas;
-  for (const Light& light : view.scene().lights) {
+ProbeLights::ProbeLights(const Scene& scene) {
+  for (const Light& light : scene.lights) {
     if (light.type == LightType::Sky || light.type == LightType::Environment)
       skies.push_back(&light);
     else
       deltas.push_back(&light);
   }
+}
+
+Rgb probeRayRadiance(const RenderScene& view, const std::vector<Rgb>& radiosity,
+                     const ProbeLights& lights, const Eigen::Vector3d& origin,
+                     const Eigen::Vector3d& direction, bool* backFace) {
+  const SurfaceHit hit = view.intersect(origin, direction);
+  Rgb radiance;
+  if (hit.hit()) {
+    if (hit.front)
+      radiance = radiosity.at(hit.element) / M_PI;
+    else if (backFace)
+      *backFace = true;
+  } else {
+    for (const Light* sky : lights.skies) radiance += skyRadiance(*sky, direction);
+  }
+  return radiance;
+}
+
+std::vector<DeltaLightArrival> deltaLightArrivals(const RenderScene& view,
+                                                  const ProbeLights& lights,
+                                                  const Eigen::Vector3d& x) {
+  std::vector<DeltaLightArrival> arrivals;
+  for (const Light* light : lights.deltas) {
+    Eigen::Vector3d toLight;
+    Rgb irradiance;
+    if (light->type == LightType::Directional) {
+      toLight = -light->direction.normalized();
+      if (view.occludedAlong(x, toLight)) continue;
+      irradiance = light->irradiance;
+    } else {
+      toLight = light->position - x;
+      const double r2 = toLight.squaredNorm();
+      if (!(r2 > 0) || !std::isfinite(r2)) continue;
+      toLight /= std::sqrt(r2);
+      const double falloff = light->type == LightType::Spot
+                                 ? spotFalloff(*light, light->direction.normalized().dot(-toLight))
+                                 : 1.0;
+      if (!(falloff > 0)) continue;
+      if (view.occluded(x, light->position)) continue;
+      irradiance = light->intensity * (falloff / r2);
+    }
+    arrivals.push_back({toLight, irradiance});
+  }
+  return arrivals;
+}
+
+std::vector<ProbeSh> computeProbes(const RenderScene& view, const std::vector<Rgb>& radiosity,
+                                   const std::vector<Eigen::Vector3d>& points, int rays,
+                                   uint64_t seed) {
+  if (rays < 1) throw InputError("light probes need at least one ray each");
+  // Lights at infinity seen by the escaped rays, and those added analytically.
+  const ProbeLights lights(view.scene());
   std::vector<ProbeSh> probes(points.size());
-  tbb::parallel_for(
-      tbb::blocked_range<size_t>(0, points.size()), [&](const tbb::blocked_range<size_t>& range) {
-        for (size_t p = range.begin(); p < range.end(); ++p)
-          probes[p] = computeProbe(view, radiosity, points[p], rays, seed, p, skies, deltas);
-      });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size()),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t p = range.begin(); p < range.end(); ++p)
+                        probes[p] = computeProbe(view, radiosity, points[p], rays, seed, p, lights);
+                    });
   return probes;
 }
 
@@ -198,7 +234,7 @@ void writeProbesJson(std::ostream& out, const std::vector<ProbeSh>& probes) {
 }
 
 void writeProbesBinary(std::ostream& out, const std::vector<ProbeSh>& probes) {
-  out.write("RADPRB01", 8);
+  out.write(kProbesMagic, 8);
   putU32(out, static_cast<uint32_t>(probes.size()));
   for (const ProbeSh& p : probes) {
     for (int a = 0; a < 3; ++a) putF32(out, p.position[a]);
@@ -206,6 +242,56 @@ void writeProbesBinary(std::ostream& out, const std::vector<ProbeSh>& probes) {
       for (int ch = 0; ch < 3; ++ch) putF32(out, c[ch]);
     putU32(out, p.inside ? 1u : 0u);
   }
+}
+
+std::vector<ProbeSh> readProbesBinary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open the light probes");
+  auto fail = [&](const std::string& what) { throw InputError(path, 0, what); };
+  unsigned char header[kProbesHeader];
+  in.read(reinterpret_cast<char*>(header), kProbesHeader);
+  const size_t got = static_cast<size_t>(in.gcount());
+  if (got == 0) fail("empty: not a light probes file");
+  if (std::memcmp(header, kProbesMagic, std::min<size_t>(got, 8)) != 0)
+    fail("not a light probes file (it starts with \"RADPRB01\")");
+  if (got < kProbesHeader)
+    fail("cut short in the header (" + std::to_string(got) + " of 12 bytes)");
+  const uint32_t count = getU32(header + 8);
+  if (count > kMaxProbes)
+    fail(std::to_string(count) + " probes: more than a probe grid holds (" +
+         std::to_string(kMaxProbes) + ")");
+  // The length against the count before anything is allocated for the probes.
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  if (end < 0) fail("cannot read the file's length");
+  const uint64_t expected = kProbesHeader + uint64_t(kProbeBytes) * count;
+  const uint64_t length = static_cast<uint64_t>(end);
+  if (length != expected)
+    fail(std::string(length < expected ? "cut short" : "longer than its count says") + ": " +
+         std::to_string(count) + " probes take " + std::to_string(expected) +
+         " bytes, the file has " + std::to_string(length));
+  in.seekg(static_cast<std::streamoff>(kProbesHeader));
+  std::vector<unsigned char> bytes(expected - kProbesHeader);
+  if (!bytes.empty()) {
+    in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    if (!in || static_cast<size_t>(in.gcount()) != bytes.size()) fail("cannot read the probes");
+  }
+  std::vector<ProbeSh> probes(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    const unsigned char* b = bytes.data() + size_t(i) * kProbeBytes;
+    const std::string which = "probe " + std::to_string(i);
+    ProbeSh& p = probes[i];
+    for (int a = 0; a < 3; ++a) p.position[a] = getF32(b + 4 * a);
+    if (!p.position.allFinite()) fail(which + ": its position is not finite");
+    for (int k = 0; k < 9; ++k)
+      for (int ch = 0; ch < 3; ++ch) p.coefficients[k][ch] = getF32(b + 12 + 4 * (3 * k + ch));
+    for (const Rgb& c : p.coefficients)
+      if (!c.isFinite()) fail(which + ": a coefficient is not finite");
+    const uint32_t flags = getU32(b + 120);
+    if (flags > 1) fail(which + ": unknown flags " + std::to_string(flags) + " (bit 0: inside)");
+    p.inside = flags & 1u;
+  }
+  return probes;
 }
 
 }  // namespace rad

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "radiosity/core/rgb.h"
@@ -45,6 +46,34 @@ std::vector<ProbeSh> computeProbes(const RenderScene& view, const std::vector<Rg
                                    const std::vector<Eigen::Vector3d>& points, int rays,
                                    uint64_t seed);
 
+// The scene's lights as a probe ray sees them: at infinity, seen by the rays that leave the scene
+// (sky, environment), and the delta lights added analytically (point, spot, directional). Shared
+// with the directional lightmaps (render/directional_lightmap.h).
+struct ProbeLights {
+  std::vector<const Light*> skies, deltas;
+  explicit ProbeLights(const Scene& scene);
+};
+
+// What one probe ray from `origin` (already lifted off any surface) along the unit `direction`
+// sees, W·m⁻²·sr⁻¹: the hit element's B/π on its front face, 0 on a back face (then *backFace is
+// set, when given), the skies' radiance (skyRadiance) when it leaves the scene.
+Rgb probeRayRadiance(const RenderScene& view, const std::vector<Rgb>& radiosity,
+                     const ProbeLights& lights, const Eigen::Vector3d& origin,
+                     const Eigen::Vector3d& direction, bool* backFace = nullptr);
+
+// A delta light's light at a point: the unit direction towards it and the irradiance (W·m⁻²) on a
+// surface facing it.
+struct DeltaLightArrival {
+  Eigen::Vector3d toLight;
+  Rgb irradiance;
+};
+// The delta lights of `lights` whose shadow ray from `point` (already lifted off any surface) is
+// clear, with a non-zero spot falloff: a directional light (a sun with an angular diameter taken at
+// its centre direction) by its irradiance, a point or spot light by intensity × falloff / r².
+std::vector<DeltaLightArrival> deltaLightArrivals(const RenderScene& view,
+                                                  const ProbeLights& lights,
+                                                  const Eigen::Vector3d& point);
+
 // Irradiance (W/m²) on a surface of unit normal `normal` at the probe, from the coefficients
 // (Ramamoorthi & Hanrahan 2001): E(n) = Σ_k Â_l c_k Y_k(n), Â_0 = π, Â_1 = 2π/3, Â_2 = π/4.
 Rgb probeIrradiance(const ProbeSh& probe, const Eigen::Vector3d& normal);
@@ -63,5 +92,15 @@ void writeProbesJson(std::ostream& out, const std::vector<ProbeSh>& probes);
 // 27 f32 coefficients k-major (c0.r c0.g c0.b c1.r ... c8.b), u32 flags (bit 0: inside): 124
 // bytes a probe after the 12-byte header.
 void writeProbesBinary(std::ostream& out, const std::vector<ProbeSh>& probes);
+
+// The most probes a probes.bin may hold: probeGrid's limit.
+inline constexpr uint32_t kMaxProbes = 1000000;
+
+// Reads a probes.bin (the layout above) whole, or nothing: InputError naming `path` when it cannot
+// be opened, does not start with "RADPRB01", is shorter or longer than its count says (12 + 124 ×
+// count bytes), counts more than kMaxProbes, or holds a position or coefficient that is not
+// finite, or flags other than bit 0. The file's length is checked against the count before any
+// allocation.
+std::vector<ProbeSh> readProbesBinary(const std::string& path);
 
 }  // namespace rad

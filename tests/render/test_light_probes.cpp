@@ -1,11 +1,15 @@
 // Light probes (render/light_probes.h): the SH basis against its own orthonormality, and probes
 // against closed-form projections: a furnace (every element the same B, so L = B/π from every
 // direction), a uniform sky over an empty scene, a lone directional light; the grid and the
-// binary layout.
+// binary layout, and its reader (round trip, every truncation and corruption refused or read
+// whole).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -242,6 +246,140 @@ TEST(LightProbes, BinaryFileFollowsTheDocumentedLayout) {
   std::ostringstream json;
   writeProbesJson(json, probes);
   EXPECT_NE(json.str().find("\"sh\""), std::string::npos);
+}
+
+// Three probes with distinct values in every field, exactly representable as f32.
+std::vector<ProbeSh> sampleProbes() {
+  std::vector<ProbeSh> probes(3);
+  for (int p = 0; p < 3; ++p) {
+    probes[p].position = {0.5 * p, -2.0 + p, 3.25};
+    for (int k = 0; k < 9; ++k) probes[p].coefficients[k] = {p + 0.5 * k, -1.0 * k, 0.125 * k};
+  }
+  probes[1].inside = true;
+  return probes;
+}
+
+std::string binaryOf(const std::vector<ProbeSh>& probes) {
+  std::ostringstream out;
+  writeProbesBinary(out, probes);
+  return out.str();
+}
+
+std::filesystem::path scratchFile(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("radiosity_test_" + std::to_string(::getpid()) + "_" + name);
+}
+
+// Writes `bytes` to a scratch file and reads it back.
+struct ProbeFile {
+  std::filesystem::path path = scratchFile("probes.bin");
+  explicit ProbeFile(const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+  ~ProbeFile() { std::filesystem::remove(path); }
+  std::vector<ProbeSh> read() const { return readProbesBinary(path.string()); }
+  // The InputError's message; "" when the file is read.
+  std::string error() const {
+    try {
+      read();
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), path.string()) << e.what();
+      return e.what();
+    }
+    return "";
+  }
+};
+
+TEST(LightProbes, BinaryReaderReadsBackWhatTheWriterWrote) {
+  const std::vector<ProbeSh> probes = sampleProbes();
+  const std::vector<ProbeSh> back = ProbeFile(binaryOf(probes)).read();
+  ASSERT_EQ(back.size(), probes.size());
+  for (size_t p = 0; p < probes.size(); ++p) {
+    EXPECT_EQ(back[p].position, probes[p].position) << p;
+    EXPECT_EQ(back[p].inside, probes[p].inside) << p;
+    for (int k = 0; k < 9; ++k)
+      for (int ch = 0; ch < 3; ++ch)
+        EXPECT_EQ(back[p].coefficients[k][ch], probes[p].coefficients[k][ch]) << p << " " << k;
+  }
+  // Values that are not f32 come back rounded to f32, as the layout stores them.
+  std::vector<ProbeSh> one(1);
+  one[0].position = {0.1, 0.2, 0.3};
+  one[0].coefficients[4] = {1.0 / 3, 2.0 / 3, 1e-9};
+  const ProbeSh again = ProbeFile(binaryOf(one)).read().at(0);
+  EXPECT_EQ(again.position.x(), double(0.1f));
+  EXPECT_EQ(again.coefficients[4].g, double(float(2.0 / 3)));
+  EXPECT_TRUE(ProbeFile(binaryOf({})).read().empty());  // no probes: 12 bytes
+}
+
+TEST(LightProbes, BinaryReaderRefusesBadFilesNamingTheFileAndWhatIsWrong) {
+  const std::string good = binaryOf(sampleProbes());
+  auto contains = [](const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+  };
+  EXPECT_TRUE(contains(ProbeFile("").error(), "empty"));
+  {
+    std::string bad = good;
+    bad[3] = 'x';
+    EXPECT_TRUE(contains(ProbeFile(bad).error(), "not a light probes file"));
+  }
+  EXPECT_TRUE(contains(ProbeFile("solution.vtp follows").error(), "not a light probes file"));
+  // Every truncation is refused: in the header, or against the count.
+  for (size_t n = 0; n < good.size(); ++n) {
+    const std::string message = ProbeFile(good.substr(0, n)).error();
+    EXPECT_TRUE(n == 0 ? contains(message, "empty") : contains(message, "cut short"))
+        << n << ": " << message;
+  }
+  EXPECT_TRUE(contains(ProbeFile(good + "x").error(), "longer than its count says"));
+  {
+    std::string bad = good;
+    bad[8] = 2;  // the count says 2, the file holds 3
+    EXPECT_TRUE(contains(ProbeFile(bad).error(), "longer than its count says"));
+    bad[8] = 4;
+    EXPECT_TRUE(contains(ProbeFile(bad).error(), "cut short"));
+  }
+  {
+    // A count past the limit is refused before anything is allocated.
+    std::string bad = good.substr(0, 12);
+    bad[8] = bad[9] = bad[10] = bad[11] = '\xff';
+    EXPECT_TRUE(contains(ProbeFile(bad).error(), "more than a probe grid holds"));
+  }
+  auto withF32 = [&](size_t offset, float value) {
+    std::string bad = good;
+    std::memcpy(&bad[offset], &value, 4);  // the host is little-endian, as the layout
+    return bad;
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_TRUE(contains(ProbeFile(withF32(12 + 124 + 4, nan)).error(),
+                       "probe 1: its position is not finite"));
+  EXPECT_TRUE(contains(ProbeFile(withF32(12 + 248 + 12 + 4 * 26, -inf)).error(),
+                       "probe 2: a coefficient is not finite"));
+  {
+    std::string bad = good;
+    bad[12 + 120] = 2;  // an unknown flag bit
+    EXPECT_TRUE(contains(ProbeFile(bad).error(), "probe 0: unknown flags 2"));
+  }
+  EXPECT_THROW(readProbesBinary(scratchFile("missing.bin").string()), InputError);
+}
+
+// Any one byte corrupted: the file is refused with an InputError naming it, or read whole with
+// finite values (a corrupted value is still a value).
+TEST(LightProbes, BinaryReaderReadsEveryCorruptedByteWholeOrNotAtAll) {
+  const std::string good = binaryOf(sampleProbes());
+  for (size_t i = 0; i < good.size(); ++i)
+    for (const unsigned char value : {0x00, 0x7f, 0x80, 0xff}) {
+      std::string bad = good;
+      bad[i] = static_cast<char>(value);
+      const ProbeFile file(bad);
+      try {
+        const std::vector<ProbeSh> probes = file.read();
+        ASSERT_EQ(probes.size(), 3u) << i;
+        for (const ProbeSh& p : probes) {
+          EXPECT_TRUE(p.position.allFinite()) << i;
+          for (const Rgb& c : p.coefficients) EXPECT_TRUE(c.isFinite()) << i;
+        }
+      } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), file.path.string()) << i;
+      }
+    }
 }
 
 }  // namespace

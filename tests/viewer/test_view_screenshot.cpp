@@ -1,13 +1,16 @@
 // `radiosity view --screenshot` under Xvfb: the Cornell box from its camera, walls on the right
-// sides, and the convergence panel.
+// sides, the convergence panel, and the light probes' spheres.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
 #include <vtkSmartPointer.h>
 
+#include <Eigen/Core>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "tests/support/run_command.h"
 
@@ -286,6 +289,115 @@ TEST(ViewScreenshot, BadInputNamesTheFileAndLeavesNoPng) {
             0);
   EXPECT_NE(errors.find("--size"), std::string::npos) << errors;
   EXPECT_FALSE(fs::exists(png));
+  fs::remove_all(dir);
+}
+
+// `view DIR` shows DIR/probes.bin: each front probe of the Cornell box's 3 × 3 × 3 grid is a
+// sphere where the scene camera projects it (gone with --no-probes), and its shading follows its
+// SH: of two points above and below (left and right of) its centre, the brighter on screen is the
+// one whose normal the probe's irradiance (probes.json) says gets more light. (From the camera a
+// front probe shows the half that faces the box's open front, not its top: the lamp-lit tops are
+// checked in ProbePolyData.ProbeLitFromAboveIsBrighterOnTop.) A truncated probes.bin is refused
+// naming it; --no-probes does not read it.
+TEST(ViewScreenshot, LightProbesAreSpheresShadedByTheirSh) {
+  if (!haveXvfb())
+    GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
+  const fs::path dir = cornellWithCamera("view_probes");
+  const fs::path out = dir / "out";
+  const auto solve = testing::runRadiosity(
+      "solve " + (dir / "cornell_box.obj").string() +
+      " --elements 300 --rays 64 --probes 0.2 --probe-rays 256 --quiet --out " + out.string());
+  ASSERT_EQ(solve.exitCode, 0) << solve.stderrText;
+  std::string errors;
+  const fs::path with = dir / "with.png", without = dir / "without.png";
+  const std::string common = out.string() + " --camera-from-scene --size 320x240 --quiet";
+  ASSERT_EQ(runView(common + " --screenshot " + with.string(), errors), 0) << errors;
+  ASSERT_EQ(runView(common + " --no-probes --screenshot " + without.string(), errors), 0) << errors;
+  const Image a = readPng(with), b = readPng(without);
+  ASSERT_EQ(a.width, 320);
+  ASSERT_EQ(b.width, 320);
+
+  // The front row of probes (smallest z), projected by the scene camera: at (0.278, 0.273, -0.8)
+  // looking +z, +y up, +x to the left, 39.3° over the scene's 240 × 240 px.
+  std::ifstream json(out / "probes.json");
+  const nlohmann::json probes = nlohmann::json::parse(json).at("probes");
+  ASSERT_EQ(probes.size(), 27u);
+  double front = 1e9;
+  for (const auto& p : probes) front = std::min(front, p.at("position")[2].get<double>());
+  const Eigen::Vector3d eye(0.278, 0.273, -0.8);
+  const double focal = 120 / std::tan(39.3 / 2 * M_PI / 180), radius = 0.15 * 0.2;
+  auto grey = [](const Image& image, int x, int y) {
+    const auto& p = image.rgb[y * image.width + x];
+    return p[0] + p[1] + p[2];
+  };
+  int checked = 0, decisive = 0, agree = 0;
+  for (const auto& p : probes) {
+    const auto& x = p.at("position");
+    const Eigen::Vector3d centre(x[0].get<double>(), x[1].get<double>(), x[2].get<double>());
+    if (std::abs(centre.z() - front) > 1e-6 || p.at("inside").get<bool>()) continue;
+    const double depth = centre.z() - eye.z();
+    const double u = 120 - focal * (centre.x() - eye.x()) / depth;
+    const double v = 120 - focal * (centre.y() - eye.y()) / depth;
+    const double r = focal * radius / depth;
+    ASSERT_GT(r, 8);
+    // The irradiance's channel sum the SH gives (docs/rendering.md's convention, written out
+    // here) at the sphere's normal under pixel (px, py): the camera ray meets the sphere there.
+    auto expected = [&](int px, int py) {
+      const Eigen::Vector3d d =
+          Eigen::Vector3d(-(px + 0.5 - 120) / focal, -(py + 0.5 - 120) / focal, 1).normalized();
+      const Eigen::Vector3d m = eye - centre;
+      const double bq = m.dot(d), disc = bq * bq - (m.squaredNorm() - radius * radius);
+      if (disc < 0) return -1.0;
+      const Eigen::Vector3d n = (m + (-bq - std::sqrt(disc)) * d) / radius;
+      const double y[9] = {0.282095,
+                           0.488603 * n.y(),
+                           0.488603 * n.z(),
+                           0.488603 * n.x(),
+                           1.092548 * n.x() * n.y(),
+                           1.092548 * n.y() * n.z(),
+                           0.315392 * (3 * n.z() * n.z() - 1),
+                           1.092548 * n.x() * n.z(),
+                           0.546274 * (n.x() * n.x() - n.y() * n.y())};
+      double e = 0;
+      for (int k = 0; k < 9; ++k) {
+        const double band = k == 0 ? M_PI : k < 4 ? 2 * M_PI / 3 : M_PI / 4;
+        for (int c = 0; c < 3; ++c) e += band * p.at("sh")[k][c].get<double>() * y[k];
+      }
+      return e;
+    };
+    // Drawn: the sphere's centre differs from the picture without probes.
+    const int cu = static_cast<int>(u), cv = static_cast<int>(v);
+    EXPECT_GT(std::abs(grey(a, cu, cv) - grey(b, cu, cv)), 6)
+        << "no probe drawn at " << u << ", " << v;
+    ++checked;
+    // Above against below, left against right of the centre: where the SH says one side gets
+    // 1.5 × the other's light, the picture is brighter there.
+    const int o = static_cast<int>(0.6 * r);
+    for (const auto& [du, dv] : {std::pair{0, o}, std::pair{o, 0}}) {
+      const double e1 = expected(cu - du, cv - dv), e2 = expected(cu + du, cv + dv);
+      ASSERT_GT(std::min(e1, e2), -1.0) << "the ray misses the sphere";
+      if (!(e1 > 1.5 * e2 || e2 > 1.5 * e1) || std::min(e1, e2) <= 0) continue;
+      ++decisive;
+      const int g1 = grey(a, cu - du, cv - dv), g2 = grey(a, cu + du, cv + dv);
+      agree += e1 > e2 ? g1 > g2 : g2 > g1;
+      EXPECT_EQ(e1 > e2, g1 > g2) << "probe at " << centre.transpose() << ", offset " << du << ", "
+                                  << dv << ": SH " << e1 << " vs " << e2 << ", picture " << g1
+                                  << " vs " << g2;
+    }
+  }
+  EXPECT_EQ(checked, 9);
+  EXPECT_GE(decisive, 6);
+  EXPECT_EQ(agree, decisive);
+
+  // A truncated probes.bin: exit 1 naming it, no PNG; --no-probes leaves it unread.
+  fs::resize_file(out / "probes.bin", 100);
+  const fs::path never = dir / "never.png";
+  EXPECT_EQ(runView(common + " --screenshot " + never.string(), errors), 1);
+  EXPECT_NE(errors.find((out / "probes.bin").string() + ": cut short"), std::string::npos)
+      << errors;
+  EXPECT_FALSE(fs::exists(never));
+  EXPECT_EQ(runView(common + " --no-probes --screenshot " + never.string(), errors), 0) << errors;
+  EXPECT_EQ(runView(common + " --no-probes --probes " + (out / "probes.bin").string(), errors), 2);
   fs::remove_all(dir);
 }
 

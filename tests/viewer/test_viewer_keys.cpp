@@ -32,14 +32,14 @@ TEST_F(ViewerKeys, EveryHelpKeyIsHandledAndPickingFindsTheFacingWall) {
   options.camera = Camera{{0.5, 0.5, -2}, {0.5, 0.5, 0.5}, {0, 1, 0}, 30};
   SolutionViewer viewer(makeSolutionPolyData(mesh, b, {}, ToneMap{0.1}), ToneMap{0.1}, nullptr,
                         options);
-  for (const char* key : {"1", "2", "3", "4", "5", "6", "7",     "8", "9", "v", "e",
-                          "o", "u", "u", "h", "x", "r", "space", "g", "b", "a", "l"})
+  for (const char* key : {"1", "2", "3", "4", "5", "6",     "7", "8", "9", "v", "e", "o",
+                          "u", "u", "h", "x", "r", "space", "g", "b", "a", "l", "i"})
     EXPECT_TRUE(viewer.handleKey(key, 100, 100)) << key;
   EXPECT_FALSE(viewer.handleKey("w", 100, 100));  // VTK's wireframe key is not ours
   // Each key starts a line of the on-screen help.
   const std::string help = "\n" + SolutionViewer::keyHelp();
-  for (const char* key : {"h ", "1 ... 9 ", "v ", "e ", "o ", "u ", "p ", "l ", "x ", "space ",
-                          "g ", "b ", "a ", "r ", "q "})
+  for (const char* key : {"h ", "1 ... 9 ", "v ", "e ", "o ", "u ", "p ", "l ", "x ", "i ",
+                          "space ", "g ", "b ", "a ", "r ", "q "})
     EXPECT_NE(help.find(std::string("\n") + key), std::string::npos) << key;
 
   const auto png = std::filesystem::temp_directory_path() /
