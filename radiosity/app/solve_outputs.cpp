@@ -135,12 +135,14 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
                             {"elements_moved_or_added", r.update.moved},
                             {"kept_elements_moved_or_removed", r.update.removed},
                             {"rows_reused", r.update.rowsReused},
+                            {"rows_updated_ray_by_ray", r.update.rowsUpdated},
+                            {"rays_changed", r.update.raysChanged},
                             {"rows_cast_again", r.rowsComputed},
-                            {"rows_meeting_the_edit", r.update.rowsMeetingEdit},
                             {"rows_with_other_exposure_or_budget", r.update.rowsOtherChange},
                             {"note",
-                             "a kept row is reused when its element stayed put and none of its "
-                             "rays meets the edited geometry's old or new place"}}},
+                             "a kept row of an element that stayed put is reused; the rays of it "
+                             "that meet the edited geometry's old or new place before their first "
+                             "hit are cast again and their hits exchanged"}}},
   };
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -263,45 +264,104 @@ std::vector<RowRay> HemisphereFormFactors::traceRow(int element) const {
   return rays;
 }
 
-bool HemisphereFormFactors::rowMeets(int element, const TriangleSetCaster& region) const {
-  RAD_CHECK_MSG(options_.specular.empty(), "rows through mirrors and glass are not tested");
-  if (region.empty()) return false;
+bool HemisphereFormFactors::updateRow(int element, FormFactorRow& row, const Edit& edit,
+                                      int& changedRays) const {
+  RAD_CHECK_MSG(options_.specular.empty(), "rows through mirrors and glass are not updated");
+  changedRays = 0;
+  if (edit.region.empty()) return true;
   std::vector<int> cells;
   const RowSampler sampler(*this, element, cells);
   const bool partlyBuried =
       options_.exposure != nullptr && options_.exposure->buriedCells(element) != 0;
+  // The rays that meet the region no farther than their first hit, and what they hit.
+  struct Changed {
+    int oldTarget, newTarget;  // -1: escaped or a back face; kRemoved: the old place
+  };
+  constexpr int kRemoved = -3;
+  std::vector<Changed> changed;
+  int counted = 0;  // rays from exposed cells: the row's denominator
   RayBlock b;
-  float regionDistance[RayBlock::kSize];
-  float meetingOrigin[3][RayBlock::kSize], meetingDirection[3][RayBlock::kSize];
-  float meetingDistance[RayBlock::kSize], sceneDistance[RayBlock::kSize];
-  int sceneElement[RayBlock::kSize];
+  float regionDistance[RayBlock::kSize], oldDistance[RayBlock::kSize];
+  float o[3][RayBlock::kSize], d[3][RayBlock::kSize], near[RayBlock::kSize];
+  float meetDistance[RayBlock::kSize], hitDistance[RayBlock::kSize];
+  int hit[RayBlock::kSize];
   for (int begin = 0; begin < sampler.count(); begin += RayBlock::kSize) {
     b.count = std::min(RayBlock::kSize, sampler.count() - begin);
     sampler.fill(begin, b);
     const float* origin[3] = {b.castOrigin[0], b.castOrigin[1], b.castOrigin[2]};
     const float* direction[3] = {b.direction[0], b.direction[1], b.direction[2]};
-    region.distances(b.count, origin, direction, regionDistance);
-    int meeting = 0;  // the rays that meet the region somewhere, to cast into the scene
+    edit.region.distances(b.count, origin, direction, regionDistance);
+    int m = 0;
     for (int i = 0; i < b.count; ++i) {
-      if (!std::isfinite(regionDistance[i]) ||
-          (partlyBuried && options_.exposure->buried(element, b.u[2][i], b.u[3][i])))
-        continue;
-      for (int d = 0; d < 3; ++d) {
-        meetingOrigin[d][meeting] = b.castOrigin[d][i];
-        meetingDirection[d][meeting] = b.direction[d][i];
+      if (partlyBuried && options_.exposure->buried(element, b.u[2][i], b.u[3][i])) continue;
+      ++counted;
+      if (!std::isfinite(regionDistance[i])) continue;
+      for (int k = 0; k < 3; ++k) {
+        o[k][m] = b.castOrigin[k][i];
+        d[k][m] = b.direction[k][i];
       }
-      meetingDistance[meeting++] = regionDistance[i];
+      meetDistance[m++] = regionDistance[i];
     }
-    if (meeting == 0) continue;
-    const float* o[3] = {meetingOrigin[0], meetingOrigin[1], meetingOrigin[2]};
-    const float* d[3] = {meetingDirection[0], meetingDirection[1], meetingDirection[2]};
-    rays_.closestHits(meeting, o, d, sceneElement, sceneDistance);
-    // The region's triangles now in the scene are hit at the same distance as in the region
-    // (the same floats): "no farther", with a margin for the rounding of the two traversals.
-    for (int i = 0; i < meeting; ++i)
-      if (meetingDistance[i] <= sceneDistance[i] * (1 + 1e-5f)) return true;
+    if (m == 0) continue;
+    const float* mo[3] = {o[0], o[1], o[2]};
+    const float* md[3] = {d[0], d[1], d[2]};
+    rays_.closestHits(m, mo, md, hit, hitDistance);
+    edit.oldPlace.distances(m, mo, md, oldDistance);
+    auto front = [&](int t, int i) {  // frontHits' rule: only a front face receives
+      if (t < 0 || t == element) return -1;
+      const float* n = &frontNormals_[3 * static_cast<size_t>(t)];
+      return n[0] * d[0][i] + n[1] * d[1][i] + n[2] * d[2][i] < 0 ? t : -1;
+    };
+    for (int i = 0; i < m; ++i) {
+      // "No farther", with a margin for the rounding of the two traversals: the region's new
+      // triangles are the scene's own, hit at the same distance.
+      if (!(meetDistance[i] <= hitDistance[i] * (1 + 1e-5f))) continue;
+      const int newTarget = front(hit[i], i);
+      // The first hit on what did not move: the same ray continued past moved elements.
+      int fixedHit = hit[i];
+      float fixedDistance = hitDistance[i];
+      while (fixedHit >= 0 && edit.moved[static_cast<size_t>(fixedHit)]) {
+        const float* one[3] = {&o[0][i], &o[1][i], &o[2][i]};
+        const float* oneD[3] = {&d[0][i], &d[1][i], &d[2][i]};
+        near[0] = std::nextafter(fixedDistance, std::numeric_limits<float>::infinity());
+        rays_.closestHits(1, one, oneD, &fixedHit, &fixedDistance, near);
+      }
+      const int oldTarget = oldDistance[i] < fixedDistance ? kRemoved : front(fixedHit, i);
+      if (oldTarget != newTarget) changed.push_back({oldTarget, newTarget});
+    }
   }
-  return false;
+  changedRays = static_cast<int>(changed.size());
+  if (changed.empty()) return true;
+  // Counts from the row's fractions (exact: count / counted is what assemble stored), changed,
+  // and back to fractions as assemble writes them.
+  const double perRay = counted > 0 ? 1.0 / counted : 0.0;
+  std::vector<std::pair<int, int64_t>> counts;  // target, count; target -1: escaped
+  counts.reserve(row.targets.size() + changed.size() + 1);
+  counts.emplace_back(-1, std::llround(row.escaped * counted));
+  for (size_t k = 0; k < row.targets.size(); ++k)
+    counts.emplace_back(row.targets[k], std::llround(row.values[k] * counted));
+  for (const Changed& c : changed) {
+    if (c.oldTarget != kRemoved) counts.emplace_back(c.oldTarget, -1);
+    counts.emplace_back(c.newTarget, 1);
+  }
+  std::sort(counts.begin(), counts.end());
+  FormFactorRow updated;
+  int64_t escaped = 0;
+  for (size_t k = 0; k < counts.size();) {
+    const int target = counts[k].first;
+    int64_t sum = 0;
+    for (; k < counts.size() && counts[k].first == target; ++k) sum += counts[k].second;
+    if (sum < 0) return false;
+    if (target < 0) {
+      escaped = sum;
+    } else if (sum > 0) {
+      updated.targets.push_back(target);
+      updated.values.push_back(static_cast<double>(sum) * perRay);
+    }
+  }
+  updated.escaped = counted > 0 ? static_cast<double>(escaped) * perRay : 1.0;
+  row = std::move(updated);
+  return true;
 }
 
 FormFactorRow HemisphereFormFactors::computeRow(int element) const {

@@ -58,14 +58,27 @@ class HemisphereFormFactors {
   FormFactorRow computeRow(int element) const;  // uses TBB across the row's rays
   // The first segments of the rays computeRow(element) casts, with what each one hit first.
   std::vector<RowRay> traceRow(int element) const;
-  // Whether any ray computeRow(element) would cast (from the element's exposed part) meets one
-  // of `region`'s triangles no farther than its first hit in the scene. `region` holds what an
-  // edit changed, where it was and where it is now (the scene holding the latter): a ray whose
-  // first hit comes before the region has the same first hit before and after the edit, so when
-  // no ray meets the region first, the row is the same. Only the rays that meet the region at all
-  // are cast into the scene (serial; callers run rows in parallel). Scenes with mirrors or glass:
-  // rays continue past their first hit, so not answered (RAD_CHECK).
-  bool rowMeets(int element, const TriangleSetCaster& region) const;
+  // An edit of the geometry (`update`): its region, the triangles of what changed where they were
+  // and where they are now (the scene holding the latter), the old place alone, and which of the
+  // scene's elements are moved or new.
+  struct Edit {
+    const TriangleSetCaster& region;
+    const TriangleSetCaster& oldPlace;
+    const std::vector<char>& moved;
+  };
+  // Brings `row`, element's row from before the edit (renumbered to the scene's elements, the
+  // entries of elements no longer there left out), up to date ray by ray, casting only the rays
+  // that meet the edit's region no farther than their first hit in the scene. The rays are the
+  // very rays computeRow(element) casts (the same random streams). A ray whose first hit comes
+  // before the region hits the same element before and after the edit; one that meets it first
+  // has its new hit added and its old one taken away: the first of its hit on the old place (an
+  // entry already left out) and its first hit on what did not move (the same ray continued past
+  // moved elements). So the row becomes, count for count, the row computeRow would give, when the
+  // element itself did not move and its exposed cells are the same. `changedRays` counts the rays
+  // whose hit changed. Returns false when a count would fall below zero (a tie between old and
+  // new hits at float precision): cast the row again. Scenes with mirrors or glass: rays continue
+  // past their first hit, so not answered (RAD_CHECK).
+  bool updateRow(int element, FormFactorRow& row, const Edit& edit, int& changedRays) const;
   int raysForRow(int element) const {
     return options_.rayMultiplier.empty()
                ? options_.raysPerElement

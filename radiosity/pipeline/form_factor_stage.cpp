@@ -96,7 +96,7 @@ void FormFactorStage::report(SolveReport& report, SolverKind solver) const {
   if (adoptedRows_ > 0)
     report.skip("form-factor rows of " + std::to_string(adoptedRows_) + " elements (" +
                     std::to_string(adoptedRays_) + " rays saved)",
-                "kept from the solve before the edit: none of their rays meets what changed");
+                "kept from the solve before the edit, brought up to date ray by ray");
   if (report.rowsComputed + adoptedRows_ < report.shooters) {
     // Hemisphere rows have a known ray count each: report what skipping them saved.
     uint64_t raysSaved = 0;

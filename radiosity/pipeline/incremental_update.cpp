@@ -60,22 +60,22 @@ std::vector<int> matchElements(const KeptFactors& kept, const PatchMesh& mesh) {
   return match;
 }
 
-// Kept row `row` in the new element numbering; false when a target is no longer in the mesh (its
-// ray met the removed geometry after all, at float rounding: the row is cast again).
-bool renumber(FormFactorRow& row, const std::vector<int>& newIndexOfOld) {
+// Kept row `row` in the new element numbering, the entries of kept elements no longer in the mesh
+// left out (the rays that hit them meet the edit's old place first: updateRow adds their new hits).
+void renumber(FormFactorRow& row, const std::vector<int>& newIndexOfOld) {
   std::vector<std::pair<int, double>> entries;
   entries.reserve(row.targets.size());
   for (size_t k = 0; k < row.targets.size(); ++k) {
     const int to = newIndexOfOld[static_cast<size_t>(row.targets[k])];
-    if (to < 0) return false;
-    entries.emplace_back(to, row.values[k]);
+    if (to >= 0) entries.emplace_back(to, row.values[k]);
   }
   std::sort(entries.begin(), entries.end());
+  row.targets.resize(entries.size());
+  row.values.resize(entries.size());
   for (size_t k = 0; k < entries.size(); ++k) {
     row.targets[k] = entries[k].first;
     row.values[k] = entries[k].second;
   }
-  return true;
 }
 
 }  // namespace
@@ -147,12 +147,15 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   // are now, and the kept elements no longer there where they were.
   const std::vector<int> match = matchElements(kept, mesh);
   std::vector<int> newIndexOfOld(kept.area.size(), -1);
-  std::vector<std::array<Eigen::Vector3d, 3>> region;
+  std::vector<char> moved(static_cast<size_t>(n), 0);
+  std::vector<std::array<Eigen::Vector3d, 3>> region, oldPlace;
   for (int e = 0; e < n; ++e) {
-    if (match[static_cast<size_t>(e)] >= 0)
+    if (match[static_cast<size_t>(e)] >= 0) {
       newIndexOfOld[static_cast<size_t>(match[static_cast<size_t>(e)])] = e;
-    else
+    } else {
+      moved[static_cast<size_t>(e)] = 1;
       region.push_back(mesh.corners(e));
+    }
   }
   SolveReport::Update& update = report.update;
   update.keptFactors = keptPath;
@@ -160,6 +163,7 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   for (size_t i = 0; i < newIndexOfOld.size(); ++i)
     if (newIndexOfOld[i] < 0) {
       region.push_back(kept.corners[i]);
+      oldPlace.push_back(kept.corners[i]);
       ++update.removed;
     }
   logInfo("update: " + std::to_string(n) + " elements, " + std::to_string(update.moved) +
@@ -175,12 +179,14 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   std::shared_ptr<KeptFactors> next = keepLightsApart(solution, rays, options, exposure,
                                                       meshed.sizing.edge, rayMultipliers, report);
 
-  // Rows: a kept row is reused when its element stayed put with the same exposed area and ray
-  // budget and none of its rays meets the edit's region.
+  // Rows: a kept row is brought up to date ray by ray when its element stayed put with the same
+  // exposed area and ray budget; the others are cast again.
   FormFactorStage formFactors(solution.scene, mesh, rays, solution.problem, options, &exposure,
                               rayMultipliers);
-  const TriangleSetCaster edit(region, rays.centre());
-  std::vector<char> reuse(static_cast<size_t>(n), 0), meets(static_cast<size_t>(n), 0);
+  const TriangleSetCaster regionCaster(region, rays.centre()), oldCaster(oldPlace, rays.centre());
+  const HemisphereFormFactors::Edit edit{regionCaster, oldCaster, moved};
+  std::vector<char> reuse(static_cast<size_t>(n), 0);
+  std::vector<int> changedRays(static_cast<size_t>(n), 0);
   std::vector<FormFactorRow> rows(static_cast<size_t>(n));
   t = Clock::now();
   std::vector<int> candidates;
@@ -202,32 +208,35 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
                     [&](const tbb::blocked_range<size_t>& range) {
                       for (size_t k = range.begin(); k != range.end(); ++k) {
                         const int e = candidates[k];
-                        meets[static_cast<size_t>(e)] = formFactors.hemisphere().rowMeets(e, edit);
+                        FormFactorRow row =
+                            kept.rows[static_cast<size_t>(match[static_cast<size_t>(e)])];
+                        renumber(row, newIndexOfOld);
+                        if (formFactors.hemisphere().updateRow(e, row, edit, changedRays[e])) {
+                          rows[static_cast<size_t>(e)] = std::move(row);
+                          reuse[static_cast<size_t>(e)] = 1;
+                        }
                         progress.advance(formFactors.hemisphere().raysForRow(e));
                       }
                     });
   progress.finish(std::to_string(candidates.size()) + " rows");
   for (int e : candidates) {
-    if (meets[static_cast<size_t>(e)]) {
-      ++update.rowsMeetingEdit;
-      continue;
+    if (!reuse[static_cast<size_t>(e)]) {
+      ++update.rowsOtherChange;  // a tie at float precision: cast again
+    } else if (changedRays[e] > 0) {
+      ++update.rowsUpdated;
+      update.raysChanged += static_cast<uint64_t>(changedRays[e]);
+    } else {
+      ++update.rowsReused;
     }
-    FormFactorRow row = kept.rows[static_cast<size_t>(match[static_cast<size_t>(e)])];
-    if (!renumber(row, newIndexOfOld)) {
-      ++update.rowsMeetingEdit;
-      continue;
-    }
-    rows[static_cast<size_t>(e)] = std::move(row);
-    reuse[static_cast<size_t>(e)] = 1;
-    ++update.rowsReused;
   }
   const double testSeconds = since(t);
-  logInfo("update: " + std::to_string(update.rowsReused) + " rows reused, " +
-          std::to_string(n - update.rowsReused) + " cast again (" + std::to_string(update.moved) +
-          " moved or new, " + std::to_string(update.rowsMeetingEdit) +
-          " whose rays meet the edit, " + std::to_string(update.rowsOtherChange) +
-          " with another exposed area or ray budget); rays tested in " + formatNumber(testSeconds) +
-          " s");
+  logInfo("update: " + std::to_string(update.rowsReused) + " rows reused as they were, " +
+          std::to_string(update.rowsUpdated) + " updated ray by ray (" +
+          std::to_string(update.raysChanged) + " rays changed their hit), " +
+          std::to_string(n - update.rowsReused - update.rowsUpdated) + " cast again (" +
+          std::to_string(update.moved) + " moved or new, " +
+          std::to_string(update.rowsOtherChange) +
+          " with another exposed area or ray budget); in " + formatNumber(testSeconds) + " s");
   formFactors.adoptRows(std::move(rows), reuse);
   next->rows = formFactors.takeAllRows();
   next->fingerprint = keptFactorsFingerprint(solution.scene, options);

@@ -82,12 +82,14 @@ struct SolveReport {
   std::string relitFrom;  // relight: the kept factors the solve reused (no ray cast)
   // update (incremental_update.h): the kept factors it started from and what the edit changed.
   struct Update {
-    std::string keptFactors;  // empty: not an update
-    int moved = 0;            // elements not in the kept mesh (moved or added)
-    int removed = 0;          // kept elements no longer in the mesh (moved or removed)
-    int rowsReused = 0;       // kept rows taken as they were
-    int rowsMeetingEdit = 0;  // rows of unmoved elements cast again: their rays meet the edit
-    int rowsOtherChange = 0;  // … cast again: their exposed area or ray budget changed
+    std::string keptFactors;   // empty: not an update
+    int moved = 0;             // elements not in the kept mesh (moved or added)
+    int removed = 0;           // kept elements no longer in the mesh (moved or removed)
+    int rowsReused = 0;        // kept rows taken as they were: no ray meets the edit first
+    int rowsUpdated = 0;       // kept rows brought up to date ray by ray
+    uint64_t raysChanged = 0;  // … the rays among theirs whose first hit changed
+    int rowsOtherChange = 0;   // rows of unmoved elements cast again: their exposed area or ray
+                               // budget changed, or old and new hits tied
   } update;
   StageTimes times;
   std::vector<SkipNote> skipped;

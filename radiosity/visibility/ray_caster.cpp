@@ -222,7 +222,8 @@ RayHit RayCaster::closestHit(const Eigen::Vector3d& origin, const Eigen::Vector3
 }
 
 void RayCaster::closestHits(int count, const float* const origin[3],
-                            const float* const direction[3], int* element, float* distance) const {
+                            const float* const direction[3], int* element, float* distance,
+                            const float* nearest) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit;
@@ -237,7 +238,7 @@ void RayCaster::closestHits(int count, const float* const origin[3],
     rayHit.ray.dir_x = direction[0][k];
     rayHit.ray.dir_y = direction[1][k];
     rayHit.ray.dir_z = direction[2][k];
-    rayHit.ray.tnear = 0.0f;
+    rayHit.ray.tnear = nearest ? nearest[k] : 0.0f;
     rayHit.ray.tfar = std::numeric_limits<float>::infinity();
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;

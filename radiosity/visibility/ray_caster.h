@@ -64,9 +64,10 @@ class RayCaster {
   // The batch form of closestHit for callers that make rays in bulk (form-factor rows): rays in
   // the caster's own frame (scene coordinates minus centre(), as Embree's floats), as separate
   // coordinate arrays, all cast with one intersect context and no per-ray conversion. Writes
-  // each ray's closest element (-1: none) and its distance (infinite when none).
+  // each ray's closest element (-1: none) and its distance (infinite when none). With `nearest`,
+  // ray k counts only hits beyond nearest[k] (the same ray, continued past what it hit first).
   void closestHits(int count, const float* const origin[3], const float* const direction[3],
-                   int* element, float* distance) const;
+                   int* element, float* distance, const float* nearest = nullptr) const;
   // The point the BVH is centred on: scene coordinates minus this are what Embree sees.
   const Eigen::Vector3d& centre() const { return centre_; }
 
