@@ -269,6 +269,21 @@ bool HemisphereFormFactors::updateRow(int element, FormFactorRow& row, const Edi
   RAD_CHECK_MSG(options_.specular.empty(), "rows through mirrors and glass are not updated");
   changedRays = 0;
   if (edit.region.empty()) return true;
+  // Rays leave into the element's front half-space only: a region wholly behind its plane (every
+  // corner of its bounds) is never met.
+  {
+    const Eigen::Vector3d& n = normals_[element];
+    const Eigen::Vector3d p = mesh_.corners(element)[0];
+    const Eigen::Vector3d& lo = edit.region.boundsMin();
+    const Eigen::Vector3d& hi = edit.region.boundsMax();
+    bool inFront = false;
+    for (int c = 0; c < 8 && !inFront; ++c) {
+      const Eigen::Vector3d corner(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(),
+                                   c & 4 ? hi.z() : lo.z());
+      inFront = (corner - p).dot(n) > 0;
+    }
+    if (!inFront) return true;
+  }
   std::vector<int> cells;
   const RowSampler sampler(*this, element, cells);
   const bool partlyBuried =

@@ -10,6 +10,12 @@ namespace rad {
 TriangleSetCaster::TriangleSetCaster(const std::vector<std::array<Eigen::Vector3d, 3>>& triangles,
                                      const Eigen::Vector3d& centre) {
   if (triangles.empty()) return;  // meets nothing
+  lo_ = hi_ = triangles[0][0];
+  for (const auto& t : triangles)
+    for (const Eigen::Vector3d& p : t) {
+      lo_ = lo_.cwiseMin(p);
+      hi_ = hi_.cwiseMax(p);
+    }
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw RuntimeFailure("cannot create the Embree device");
   scene_ = rtcNewScene(device_);

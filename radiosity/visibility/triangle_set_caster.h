@@ -22,6 +22,9 @@ class TriangleSetCaster {
   TriangleSetCaster& operator=(const TriangleSetCaster&) = delete;
 
   bool empty() const { return scene_ == nullptr; }
+  // The triangles' bounding box, in scene coordinates (empty() when there are none).
+  const Eigen::Vector3d& boundsMin() const { return lo_; }
+  const Eigen::Vector3d& boundsMax() const { return hi_; }
   // For each ray (origins and directions in the caster's frame, as RayCaster::closestHits takes
   // them), the distance ahead of its origin to the first triangle it meets, in units of its
   // direction's length; infinite when it meets none.
@@ -32,6 +35,7 @@ class TriangleSetCaster {
   void release();
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
+  Eigen::Vector3d lo_{0, 0, 0}, hi_{0, 0, 0};
 };
 
 }  // namespace rad
