@@ -47,6 +47,10 @@ void runUpdate(const UpdateOptions& o) {
   const KeptFactors kept = readKeptFactors(keptPath);
   std::vector<Rgb> previous;
   for (const ElementsCsvRow& row : readElementsCsv(csvPath)) previous.push_back(row.radiosity);
+  if (previous.size() != kept.area.size())
+    throw InputError(csvPath, 0,
+                     std::to_string(previous.size()) + " elements, the kept factors beside it " +
+                         std::to_string(kept.area.size()) + ": not the same solve");
   logInfo("read " + keptPath + " and " + csvPath + ": " + std::to_string(kept.rows.size()) +
           " rows in " + formatNumber(secondsSince(t)) + " s");
   SolveOptions solver = kept.options;

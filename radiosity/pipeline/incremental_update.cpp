@@ -94,18 +94,12 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
         "solvers can: --solver gauss-seidel (the default) or jacobi");
   // The kept solve's mesh and ray options, with its element size fixed: an added object must not
   // change the size the scene's default would pick, or no element would stay put.
-  SolveOptions options = kept.options;
+  SolveOptions options = withSolverOf(kept.options, solverOptions);
   options.scenePath = kept.scenePath;
   options.lights = kept.lightInput;
   options.maxArea = 0;
   options.targetElements = 0;
   options.elementSize = kept.elementEdge;
-  options.solver = solverOptions.solver;
-  options.tolerance = solverOptions.tolerance;
-  options.maxIterations = solverOptions.maxIterations;
-  options.threads = solverOptions.threads;
-  options.timeLimit = solverOptions.timeLimit;
-  options.outputDir = solverOptions.outputDir;
   options.keepFactors = true;
   validateSolveOptions(options);
 
@@ -274,14 +268,9 @@ SolveOptions updatedSolutionOptions(const KeptFactors& kept, const SolveResult& 
   if (userRule.rule == ElementSizeRule::Elements ||
       std::abs(userRule.edge - kept.elementEdge) > 1e-9 * kept.elementEdge)
     return fixed;
-  SolveOptions own = kept.options;
+  SolveOptions own = withSolverOf(kept.options, fixed);
   own.scenePath = fixed.scenePath;
   own.lights = fixed.lights;
-  own.solver = fixed.solver;
-  own.tolerance = fixed.tolerance;
-  own.maxIterations = fixed.maxIterations;
-  own.threads = fixed.threads;
-  own.outputDir = fixed.outputDir;
   return own;
 }
 

@@ -415,6 +415,16 @@ std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster
   return kept;
 }
 
+SolveOptions withSolverOf(SolveOptions kept, const SolveOptions& solver) {
+  kept.solver = solver.solver;
+  kept.tolerance = solver.tolerance;
+  kept.maxIterations = solver.maxIterations;
+  kept.threads = solver.threads;
+  kept.timeLimit = solver.timeLimit;
+  kept.outputDir = solver.outputDir;
+  return kept;
+}
+
 Eigen::SparseMatrix<double, Eigen::RowMajor> keptRowsMatrix(
     const std::vector<FormFactorRow>& rows) {
   const int n = static_cast<int>(rows.size());

@@ -74,6 +74,10 @@ std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster
                                              const ElementExposure& exposure, double elementEdge,
                                              std::vector<int>& rayMultipliers, SolveReport& report);
 
+// The kept solve's options `kept` with the solver, stopping rule, threads and output directory of
+// `solver`: what relight and update solve with.
+SolveOptions withSolverOf(SolveOptions kept, const SolveOptions& solver);
+
 // F as the gathering solvers read it, from rows sorted by target (FormFactorCache::matrix's
 // rule), written directly as compressed rows. InputError for tinted rows (mirrors and glass):
 // the gathering solvers use one matrix for all channels.

@@ -30,13 +30,7 @@ SolveResult relightScene(const KeptFactors& kept, const std::string& keptPath, S
                          const std::vector<Rgb>& lightScale, const SolveOptions& solverOptions) {
   RAD_CHECK_EQ(lightScale.size(), kept.lightIrradiance.size());
   const auto start = std::chrono::steady_clock::now();
-  SolveOptions options = kept.options;
-  options.solver = solverOptions.solver;
-  options.tolerance = solverOptions.tolerance;
-  options.maxIterations = solverOptions.maxIterations;
-  options.threads = solverOptions.threads;
-  options.timeLimit = solverOptions.timeLimit;
-  options.outputDir = solverOptions.outputDir;
+  const SolveOptions options = withSolverOf(kept.options, solverOptions);
   validateSolveOptions(options);
   if (keptFactorsFingerprint(scene, kept.options) != kept.fingerprint)
     throw InputError(keptPath, 0,

@@ -139,6 +139,15 @@ TEST(CliUpdate, BadInputLeavesTheOutputsAsTheyWere) {
   // A shooting solver cannot start from the previous solution.
   r = runRadiosity("update " + kept.string() + " --solver progressive");
   EXPECT_NE(r.exitCode, 0);
+  // An elements.csv of another solve (one element): named, and left as it was.
+  const std::string oneRow = csv.substr(0, csv.find('\n', csv.find('\n') + 1) + 1);
+  std::ofstream(kept / "elements.csv", std::ios::binary) << oneRow;
+  r = runRadiosity("update " + kept.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("elements.csv"), std::string::npos) << r.stderrText;
+  EXPECT_NE(r.stderrText.find("not the same solve"), std::string::npos) << r.stderrText;
+  EXPECT_EQ(readText(kept / "elements.csv"), oneRow);
+  std::ofstream(kept / "elements.csv", std::ios::binary) << csv;
   // A cut-short factors.bin.
   const std::string factors = readText(kept / "factors.bin");
   std::ofstream(kept / "factors.bin", std::ios::binary) << factors.substr(0, factors.size() / 2);
