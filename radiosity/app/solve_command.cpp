@@ -61,9 +61,16 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
   command
       .add_option(
           "--solver", solverName,
-          "progressive (lazy rows) | southwell (progressive on all rows) | gauss-seidel | jacobi")
+          "progressive (lazy rows) | southwell (progressive on all rows) | gauss-seidel | jacobi "
+          "| hierarchical (links between a tree's nodes, docs/hierarchical.md)")
       ->default_val("progressive")
-      ->check(CLI::IsMember({"progressive", "southwell", "gauss-seidel", "jacobi"}));
+      ->check(
+          CLI::IsMember({"progressive", "southwell", "gauss-seidel", "jacobi", "hierarchical"}));
+  command
+      .add_option("--link-epsilon", options.linkEpsilon,
+                  "hierarchical: the most light one link may carry, as a fraction of the emitted "
+                  "power per element; smaller: more links, closer to the full-matrix solution")
+      ->default_val(options.linkEpsilon);
   command.add_option("--rays", options.raysPerElement, "Hemisphere rays per element")
       ->default_val(options.raysPerElement);
   command
@@ -134,11 +141,11 @@ void addSolveOptions(CLI::App& command, SolveOptions& options, std::string& solv
 namespace {
 // The options of addSolveOptions that only the radiosity solve reads.
 const char* const kSolveOnlyOptions[] = {
-    "--solver",         "--rays",         "--max-area",       "--elements",
-    "--element-size",   "--tolerance",    "--max-iterations", "--bounces",
-    "--form-factors",   "--patch-area",   "--shadow-rays",    "--refine-threshold",
-    "--min-area",       "--max-elements", "--refine-passes",  "--time-limit",
-    "--receiver-points"};
+    "--solver",          "--rays",         "--max-area",       "--elements",
+    "--element-size",    "--tolerance",    "--max-iterations", "--bounces",
+    "--form-factors",    "--patch-area",   "--shadow-rays",    "--refine-threshold",
+    "--min-area",        "--max-elements", "--refine-passes",  "--time-limit",
+    "--receiver-points", "--link-epsilon"};
 }  // namespace
 
 std::set<std::string> givenOptions(const CLI::App& command) {

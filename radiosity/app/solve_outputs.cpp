@@ -9,6 +9,7 @@
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/peak_memory.h"
 #include "radiosity/output/display_radiance.h"
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/output/tone_map.h"
@@ -129,6 +130,34 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
                       : json{{"kept_factors", r.relitFrom},
                              {"rays_cast", r.raysCast + r.directLightRays + r.exposureProbeRays},
                              {"note", "solved again from the kept factors: no ray cast"}}},
+      {"hierarchy",
+       r.hierarchy.nodes == 0
+           ? json()
+           : json{{"link_epsilon", options.linkEpsilon},
+                  {"nodes", r.hierarchy.nodes},
+                  {"clusters", r.hierarchy.clusters},
+                  {"depth", r.hierarchy.depth},
+                  {"links", r.hierarchy.links},
+                  {"receivers", r.hierarchy.receivers},
+                  {"link_passes", r.hierarchy.linkPasses},
+                  {"links_split_by_refinement", r.hierarchy.linksRefined},
+                  {"bytes",
+                   {{"tree", r.hierarchy.treeBytes},
+                    {"links", r.hierarchy.linkBytes},
+                    {"solver", r.hierarchy.solverBytes}}},
+                  {"bytes_per_element",
+                   static_cast<double>(r.hierarchy.treeBytes + r.hierarchy.linkBytes +
+                                       r.hierarchy.solverBytes) /
+                       mesh.elementCount()},
+                  {"bytes_per_link",
+                   r.hierarchy.links > 0
+                       ? static_cast<double>(r.hierarchy.linkBytes) / r.hierarchy.links
+                       : 0.0},
+                  {"peak_memory_bytes", peakMemoryBytes()},
+                  {"note",
+                   "links between nodes of a tree over the elements (clusters above the input "
+                   "patches); bytes are the tree's, the links' and the solver's own, "
+                   "peak_memory_bytes the whole process's"}}},
       {"update", r.update.keptFactors.empty()
                      ? json()
                      : json{{"kept_factors", r.update.keptFactors},

@@ -213,6 +213,15 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
   vtkSmartPointer<vtkPolyData> data =
       makeSolutionPolyData(*solution.mesh, solution.radiosity, solution.unshot, toneMap);
 
+  if (options.solver == SolverKind::Hierarchical) {
+    // Its links live inside the solve: the viewer shows the result without a solver to step.
+    if (args.raysOf >= 0)
+      logWarning("--rays-of: --solver hierarchical casts rays per link receiver, not per element");
+    if (args.stopAfter >= 0) logWarning("--stop-after: the hierarchical solve is not stepped live");
+    view.chart = false;
+    show(data, toneMap, nullptr);
+    return;
+  }
   ViewerSolve live(solution, options);
   view.tolerance = live.tolerance();
   // Replay the solve to draw its convergence curve (rows are recomputed once, then cached):

@@ -74,6 +74,7 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
   f.add(o.patchArea);
   f.add(o.shadowRays);
   f.add(o.receiverPoints);
+  if (o.solver == SolverKind::Hierarchical) f.add(o.linkEpsilon);
   return f.hex();
 }
 

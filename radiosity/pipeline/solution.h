@@ -91,6 +91,16 @@ struct SolveReport {
     int rowsOtherChange = 0;   // rows of unmoved elements cast again: their exposed area or ray
                                // budget changed, or old and new hits tied
   } update;
+  // --solver hierarchical (hierarchical_solve.h): the tree, its links and what they cost.
+  struct Hierarchy {
+    int nodes = 0;  // 0: not a hierarchical solve
+    int clusters = 0, depth = 0;
+    int64_t links = 0;
+    int receivers = 0;         // nodes that gather over links of their own
+    int linkPasses = 0;        // links made, then refined again after each solve (BF refinement)
+    int64_t linksRefined = 0;  // links split by those passes
+    int64_t treeBytes = 0, linkBytes = 0, solverBytes = 0;
+  } hierarchy;
   StageTimes times;
   std::vector<SkipNote> skipped;
 

@@ -55,6 +55,14 @@ void validateSolveOptions(const SolveOptions& options) {
     throw InputError(
         "--keep-factors keeps hemisphere rows over a uniform mesh: not with --form-factors "
         "analytic, adaptive refinement or light groups");
+  if (!(options.linkEpsilon > 0) || !std::isfinite(options.linkEpsilon))
+    throw InputError("--link-epsilon must be a positive number");
+  if (options.solver == SolverKind::Hierarchical &&
+      (options.formFactors != FormFactorMethod::Hemisphere || options.lightGroups ||
+       options.keepFactors))
+    throw InputError(
+        "--solver hierarchical casts its own rays per link receiver: not with --form-factors "
+        "analytic, --light-groups or --keep-factors");
   if (!(options.timeLimit >= 0) || !std::isfinite(options.timeLimit))
     throw InputError("--time-limit must be a non-negative number of seconds");
   if (options.bounces >= 0 && options.solver != SolverKind::Jacobi)
@@ -83,6 +91,8 @@ void checkOptionsApply(const SolveOptions& options, const std::set<std::string>&
     unused("--elements", "--element-size sets the element size; --elements only derives it");
   if (options.bounces >= 0)
     unused("--tolerance", "--bounces runs exactly that many Jacobi bounces, whatever the residual");
+  if (options.solver != SolverKind::Hierarchical)
+    unused("--link-epsilon", "it sets the links of --solver hierarchical");
   if (!(options.refineThreshold > 0))
     for (const char* name : {"--min-area", "--max-elements", "--refine-passes"})
       unused(name, std::string(name) +

@@ -24,7 +24,8 @@ struct SolveOptions {
   LightInput lights;       // scene input: --lights FILE (default the sidecar), --sky, --sun
   TwoSidedInput twoSided;  // scene input: --two-sided, --two-sided-materials
   SolverKind solver = SolverKind::Progressive;
-  int raysPerElement = 1024;  // hemisphere: rays per element row
+  int raysPerElement = 1024;  // hemisphere: rays per element row (hierarchical: per receiver)
+  double linkEpsilon = 0.05;  // hierarchical: most light a link carries / (emitted power/elements)
   // Element size (radiosity/pipeline/element_size.h): at most one of the three is given; none
   // given, the size derives from the scene's extent and area.
   double maxArea = 0;      // scene units²: largest element area; 0: not given

@@ -12,6 +12,7 @@
 #include "radiosity/core/log.h"
 #include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/form_factor_stage.h"
+#include "radiosity/pipeline/hierarchical_solve.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/kept_factors.h"
 #include "radiosity/pipeline/light_group_solve.h"
@@ -167,6 +168,15 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
       directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
     }
     noteBlackElements(solution, report);
+    if (options.solver == SolverKind::Hierarchical) {
+      t = Clock::now();
+      solveHierarchical(options, rays, exposure, limits, solution, report);
+      directLight.report(report);
+      report.times.solve = std::max(0.0, since(t) - report.times.formFactors);
+      warnIfNotConverged(limits, solution, report);
+      report.times.total = since(start);
+      return result;
+    }
     FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options,
                                 &exposure, std::move(rayMultipliers));
     throwIfInterrupted();

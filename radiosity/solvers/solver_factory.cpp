@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/solvers/gathering_solvers.h"
 #include "radiosity/solvers/progressive_solver.h"
@@ -16,7 +17,8 @@ struct KindName {
 constexpr KindName kKinds[] = {{SolverKind::Progressive, "progressive"},
                                {SolverKind::Southwell, "southwell"},
                                {SolverKind::GaussSeidel, "gauss-seidel"},
-                               {SolverKind::Jacobi, "jacobi"}};
+                               {SolverKind::Jacobi, "jacobi"},
+                               {SolverKind::Hierarchical, "hierarchical"}};
 
 // The columns of the gathering matrix must outlive the shooting that reads them: they are a base
 // constructed before the ProgressiveSolver base that refers to them.
@@ -51,7 +53,9 @@ std::string solverKindNames() {
   return names;
 }
 
-bool needsGatheringMatrix(SolverKind kind) { return kind != SolverKind::Progressive; }
+bool needsGatheringMatrix(SolverKind kind) {
+  return kind != SolverKind::Progressive && kind != SolverKind::Hierarchical;
+}
 
 int defaultMaxIterations(SolverKind kind, int elements) {
   switch (kind) {
@@ -60,6 +64,7 @@ int defaultMaxIterations(SolverKind kind, int elements) {
       return std::max(100000, 200 * elements);
     case SolverKind::GaussSeidel:
     case SolverKind::Jacobi:
+    case SolverKind::Hierarchical:
       return 10000;
   }
   return 10000;
@@ -77,7 +82,10 @@ std::unique_ptr<Solver> makeSolver(SolverKind kind, const RadiosityProblem& prob
       return std::make_unique<JacobiSolver>(problem, gatheringMatrix());
     case SolverKind::GaussSeidel:
       return std::make_unique<GaussSeidelSolver>(problem, gatheringMatrix());
+    case SolverKind::Hierarchical:
+      break;  // links over a tree, not rows: built by the pipeline (hierarchical_solve)
   }
+  RAD_CHECK(kind != SolverKind::Hierarchical);
   return nullptr;
 }
 

@@ -12,10 +12,12 @@
 namespace rad {
 
 // The ways of solving the radiosity system that the command line offers.
-enum class SolverKind { Progressive, Southwell, GaussSeidel, Jacobi };
+// Hierarchical radiosity links nodes of a tree over the elements instead of element rows: the
+// pipeline builds it (pipeline/hierarchical_solve), not makeSolver.
+enum class SolverKind { Progressive, Southwell, GaussSeidel, Jacobi, Hierarchical };
 SolverKind parseSolverKind(const std::string& name);  // InputError naming the known ones
 std::string solverKindName(SolverKind kind);
-// "progressive | southwell | gauss-seidel | jacobi", for help texts.
+// "progressive | southwell | gauss-seidel | jacobi | hierarchical", for help texts.
 std::string solverKindNames();
 // Whether the solver needs every row of the gathering matrix before its first step.
 bool needsGatheringMatrix(SolverKind kind);

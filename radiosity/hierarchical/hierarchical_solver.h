@@ -1,0 +1,78 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "radiosity/core/rgb.h"
+#include "radiosity/hierarchical/directional_clusters.h"
+#include "radiosity/hierarchical/link_set.h"
+#include "radiosity/hierarchical/node_hierarchy.h"
+#include "radiosity/solvers/radiosity_problem.h"
+#include "radiosity/solvers/solver.h"
+
+namespace rad {
+
+// Gauss–Seidel over the links of hierarchical radiosity. One step is a sweep over the input
+// patches: each gathers at every node of its tree, Σ F·B_source over the node's links (the
+// light arriving, not yet reflected), pushes what it gathered down to the leaves, where
+// B = E + ρ · (the gathered sum of the leaf and all its ancestors), and pulls B back up as area
+// averages; the clusters above the patch take the change at once, so later patches gather from
+// the new values. The measure is the relative residual of the hierarchical system:
+// Σ A |E + ρ·gathered(B) − B| / emitted power, evaluated after every sweep.
+//
+// Normalisation: a leaf's factors, summed over its own and its ancestors' links, come from the
+// rays of several receivers, each an area average over a different node, so they need not sum to
+// the share of the leaf's hemisphere that meets a surface, as one element's row does (in a
+// closed scene, exactly 1). Each leaf's gathered light is scaled by that share (from the rays of
+// the deepest receiver above it) over its factors' sum: the distribution over the sources stays
+// the links', and light is conserved leaf by leaf: a furnace gives E/(1 − ρ) exactly.
+class HierarchicalSolver : public Solver {
+ public:
+  // Keeps references to all three; the links' factors must be set.
+  HierarchicalSolver(const NodeHierarchy& tree, const LinkSet& links,
+                     const RadiosityProblem& problem);
+
+  std::string name() const override { return "hierarchical"; }
+  void step() override;
+  double progress() const override { return residual_; }
+  const std::vector<Rgb>& solution() const override { return solution_; }
+  int iterations() const override { return iterations_; }
+  std::string progressMeasure() const override { return "relative residual"; }
+
+  // Takes over another solver's B and iteration count (the same tree, before its links were
+  // refined) and evaluates the residual over this one's links.
+  void continueFrom(const HierarchicalSolver& other);
+  // The memory its per-node and per-element values hold, for the report.
+  size_t bytes() const {
+    return (nodeB_.capacity() + solution_.capacity()) * sizeof(Rgb) +
+           scale_.capacity() * sizeof(float) + clusters_.bytes();
+  }
+  // B per node (area averages over its leaves), as the oracle and the viewer read it.
+  const std::vector<Rgb>& nodeRadiosity() const { return nodeB_; }
+
+ private:
+  Rgb gathered(int node) const;
+  // Pushes `above` (gathered by the ancestors) plus the node's own gather to its leaves, sets B
+  // there and on the way back up; returns the node's A·B.
+  // `aboveDeepest`: what the ancestors of the deepest receiver on the way down gathered.
+  Rgb pushPull(int node, const Rgb& above, const Rgb& aboveDeepest);
+  // B = E + ρ·gathered at every leaf from the current node values, without changing them:
+  // Σ A |change| over the leaves.
+  double residualNorm() const;
+  void residualOf(int node, const Rgb& above, const Rgb& aboveDeepest, double& sum) const;
+  void pullClusters();
+  void updateResidual();
+  void normalise(int node, double factorsAbove, float foreign, float above);
+
+  const NodeHierarchy& tree_;
+  const LinkSet& links_;
+  const RadiosityProblem& problem_;
+  DirectionalClusters clusters_;
+  std::vector<Rgb> nodeB_;
+  std::vector<Rgb> solution_;  // per element
+  std::vector<float> scale_;   // per element: its correction's factor (normalise)
+  double residual_ = 1;
+  int iterations_ = 0;
+};
+
+}  // namespace rad

@@ -1,0 +1,71 @@
+#include "radiosity/pipeline/hierarchical_solve.h"
+
+#include <chrono>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/core/interrupt.h"
+#include "radiosity/core/log.h"
+#include "radiosity/hierarchical/hierarchical_radiosity.h"
+
+namespace rad {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+}  // namespace
+
+void solveHierarchical(const SolveOptions& options, const RayCaster& rays,
+                       const ElementExposure& exposure, const IterationLimits& limits,
+                       Solution& solution, SolveReport& report) {
+  if (solution.scene.hasSpecular())
+    throw InputError(
+        "--solver hierarchical does not follow light through mirrors and glass yet (its link "
+        "rays stop at their first hit): use --solver gauss-seidel or progressive for this scene");
+  auto t = Clock::now();
+  HierarchicalOptions hierarchical;
+  hierarchical.linkEpsilon = options.linkEpsilon;
+  hierarchical.raysPerReceiver = options.raysPerElement;
+  hierarchical.seed = options.seed;
+  hierarchical.exposure = &exposure;
+  HierarchicalRadiosity hr(*solution.mesh, rays, solution.problem, hierarchical);
+  report.times.formFactors += since(t);
+  const NodeHierarchy& tree = hr.tree();
+  logInfo("hierarchy: " + std::to_string(tree.size()) + " nodes (" +
+          std::to_string(tree.clusterCount()) + " clusters, depth " + std::to_string(tree.depth()) +
+          "), " + std::to_string(hr.links().size()) + " links from " +
+          std::to_string(hr.links().receivers().size()) + " receivers");
+  throwIfInterrupted();
+  for (;;) {
+    report.stoppedBy = iterate(hr.solver(), limits);
+    report.converged = converged(report.stoppedBy);
+    if (!report.converged || hr.passes() >= kMaxLinkPasses) break;
+    t = Clock::now();
+    const int64_t split = hr.refineLinks();
+    report.times.formFactors += since(t);
+    if (split == 0) break;
+    logInfo("links refined: " + std::to_string(split) + " split, " +
+            std::to_string(hr.links().size()) + " links");
+    throwIfInterrupted();
+  }
+  solution.radiosity = hr.solver().solution();
+  reportSolver(hr.solver(), report);
+  SolveReport::Hierarchy& h = report.hierarchy;
+  h.nodes = tree.size();
+  h.clusters = tree.clusterCount();
+  h.depth = tree.depth();
+  h.links = hr.links().size();
+  h.receivers = static_cast<int>(hr.links().receivers().size());
+  h.linkPasses = hr.passes();
+  h.linksRefined = hr.linksRefined();
+  h.treeBytes = static_cast<int64_t>(tree.bytes());
+  h.linkBytes = static_cast<int64_t>(hr.links().bytes());
+  h.solverBytes = static_cast<int64_t>(hr.solver().bytes());
+  report.raysCast += hr.raysCast();
+  report.rowsComputed = h.receivers;
+  report.shooters = h.receivers;
+}
+
+}  // namespace rad
