@@ -61,6 +61,12 @@ std::vector<NodePair> linkInParallel(const std::vector<Work>& work, const LinkOn
   return all;
 }
 
+double meanArea(const RadiosityProblem& problem) {
+  double sum = 0;
+  for (double a : problem.area) sum += a;
+  return problem.size() > 0 ? sum / problem.size() : 0.0;
+}
+
 }  // namespace
 
 HierarchicalRadiosity::HierarchicalRadiosity(const PatchMesh& mesh, const RayCaster& rays,
@@ -71,7 +77,8 @@ HierarchicalRadiosity::HierarchicalRadiosity(const PatchMesh& mesh, const RayCas
       reflectance_(largestReflectance(tree_, problem)),
       radiosity_(channelSums(nodeAverages(tree_, problem.emission))),
       oracle_(tree_, radiosity_, reflectance_,
-              options.linkEpsilon * problem.emittedPower() / problem.size()),
+              options.linkEpsilon * problem.emittedPower() / problem.size(),
+              options.raysPerReceiver, meanArea(problem)),
       factors_(tree_, mesh, rays, options.raysPerReceiver, options.seed, options.exposure) {
   // Every patch linked to the root and refined from there: clusters keep this O(n log n).
   links_ = std::make_unique<LinkSet>(

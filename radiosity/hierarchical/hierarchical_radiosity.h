@@ -17,8 +17,8 @@
 namespace rad {
 
 struct HierarchicalOptions {
-  // The most light one link may carry, over the emitted power per element: a per-link bound
-  // that scales with the mesh (the links' errors add up, and their count grows with it).
+  // The most light one link may carry, over the emitted power per element (emitted power /
+  // elements): a per-link bound that tightens as the mesh grows, since the links' errors add up.
   double linkEpsilon = 0.05;
   int raysPerReceiver = 1024;
   uint64_t seed = 1;

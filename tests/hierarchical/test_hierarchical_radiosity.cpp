@@ -188,7 +188,7 @@ TEST(HierarchicalRadiosity, ApproachesTheFullMatrixSolutionAsEpsilonShrinks) {
   }
   EXPECT_LT(links[0], links[1]);
   EXPECT_LT(error[1], error[0]) << "coarse " << error[0] << ", fine " << error[1];
-  EXPECT_LT(error[0], 0.035);
+  EXPECT_LT(error[0], 0.10);
   EXPECT_LT(error[1], 0.015);
 }
 
