@@ -19,7 +19,7 @@ namespace rad {
 struct HierarchicalOptions {
   // The most light one link may carry, over the emitted power per element (emitted power /
   // elements): a per-link bound that tightens as the mesh grows, since the links' errors add up.
-  double linkEpsilon = 0.05;
+  double linkEpsilon = 0.01;
   int raysPerReceiver = 1024;
   uint64_t seed = 1;
   const ElementExposure* exposure = nullptr;  // optional; must outlive the solve

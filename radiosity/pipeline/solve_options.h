@@ -25,7 +25,7 @@ struct SolveOptions {
   TwoSidedInput twoSided;  // scene input: --two-sided, --two-sided-materials
   SolverKind solver = SolverKind::Progressive;
   int raysPerElement = 1024;  // hemisphere: rays per element row (hierarchical: per receiver)
-  double linkEpsilon = 0.05;  // hierarchical: most light a link carries / (emitted power/elements)
+  double linkEpsilon = 0.01;  // hierarchical: most light a link carries / (emitted power/elements)
   // Element size (radiosity/pipeline/element_size.h): at most one of the three is given; none
   // given, the size derives from the scene's extent and area.
   double maxArea = 0;      // scene units²: largest element area; 0: not given

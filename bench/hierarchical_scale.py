@@ -1,0 +1,155 @@
+#!/usr/bin/python3
+"""Hierarchical radiosity against the element-row solvers as scenes grow (issue 16): solves the
+generated room (bench/scene_generator.py) at each element count with --solver hierarchical,
+gauss-seidel and progressive, one after the other at each size (so the machine's load affects
+all three alike), and records the whole-process wall time and peak resident memory
+(/usr/bin/time), the links and bytes per element of the hierarchy (summary.json), and the relative
+RMS difference of each solution from Gauss–Seidel's on the same elements (area-weighted, over the
+three channels). Fits time and memory = c · N^k per solver and writes CSV, JSON and one PNG
+(time and memory against elements, all solvers).
+
+    /usr/bin/python3 bench/hierarchical_scale.py [--build build] [--out bench/results]
+        [--sizes 10000,30000,100000] [--rays 256] [--threads 0] [--boxes 64]
+        [--row-solvers-up-to 300000]
+
+The row solvers keep one form-factor row per element (about 9 KB each at 1024 rays): above
+--row-solvers-up-to elements only the hierarchical solve runs.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SOLVERS = ("hierarchical", "gauss-seidel", "progressive")
+
+
+def fit_exponent(xs, ys):
+    """Least-squares slope of log y against log x."""
+    lx = [math.log(x) for x in xs]
+    ly = [math.log(max(y, 1e-9)) for y in ys]
+    mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
+    sxx = sum((a - mx) ** 2 for a in lx)
+    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sxx if sxx > 0 else float("nan")
+
+
+def read_radiosity(path):
+    """(area, B_r, B_g, B_b) per element from elements.csv."""
+    rows = []
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            rows.append((float(r["area"]), float(r["B_r"]), float(r["B_g"]), float(r["B_b"])))
+    return rows
+
+
+def relative_rms(rows, reference):
+    num = den = 0.0
+    for a, b in zip(rows, reference):
+        for c in (1, 2, 3):
+            num += a[0] * (a[c] - b[c]) ** 2
+            den += a[0] * b[c] ** 2
+    return math.sqrt(num / den) if den > 0 else float("nan")
+
+
+def plot_png(path, rows, fits, title):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.5), dpi=110)
+    colours = {"hierarchical": "#d62728", "gauss-seidel": "#1f77b4", "progressive": "#2ca02c"}
+    for solver in SOLVERS:
+        mine = [r for r in rows if r["solver"] == solver]
+        if not mine:
+            continue
+        n = [r["elements"] for r in mine]
+        left.plot(n, [r["wall_s"] for r in mine], "o-", color=colours[solver],
+                  label="%s, k = %.2f" % (solver, fits[solver]["wall_s"]))
+        right.plot(n, [r["peak_mib"] for r in mine], "s-", color=colours[solver],
+                   label="%s, k = %.2f" % (solver, fits[solver]["peak_mib"]))
+    for ax, label in ((left, "wall time (s)"), (right, "peak resident memory (MiB)")):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("elements N")
+        ax.set_ylabel(label)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8, loc="upper left")
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    tmp = path + ".tmp"
+    fig.savefig(tmp, format="png")
+    os.replace(tmp, path)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "bench/results"))
+    parser.add_argument("--sizes", default="10000,30000,100000")
+    parser.add_argument("--rays", type=int, default=256)
+    parser.add_argument("--threads", type=int, default=0)
+    parser.add_argument("--boxes", type=int, default=64)
+    parser.add_argument("--row-solvers-up-to", type=int, default=300000)
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    binary = os.path.join(args.build, "bin/radiosity")
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        scene = os.path.join(tmp, "room.obj")
+        subprocess.run([sys.executable, os.path.join(ROOT, "bench/scene_generator.py"), scene, "--boxes",
+                        str(args.boxes)], check=True)
+        for n in [int(s) for s in args.sizes.split(",")]:
+            solutions = {}
+            for solver in SOLVERS:
+                if solver != "hierarchical" and n > args.row_solvers_up_to:
+                    continue
+                out = os.path.join(tmp, f"{solver}_{n}")
+                cmd = ["/usr/bin/time", "-f", "%e %M", binary, "solve", scene, "--elements", str(n), "--rays",
+                       str(args.rays), "--threads", str(args.threads), "--solver", solver, "--out", out]
+                run = subprocess.run(cmd, capture_output=True, text=True)
+                if run.returncode != 0:
+                    print(run.stderr, file=sys.stderr)
+                    sys.exit(f"hierarchical_scale: {solver} with {n} elements failed")
+                wall, peak_kib = run.stderr.strip().splitlines()[-1].split()
+                s = json.load(open(os.path.join(out, "summary.json")))
+                h = s.get("hierarchy") or {}
+                solutions[solver] = read_radiosity(os.path.join(out, "elements.csv"))
+                rows.append({"solver": solver, "target_elements": n, "elements": s["scene"]["elements"],
+                             "wall_s": float(wall), "peak_mib": int(peak_kib) / 1024,
+                             "form_factor_s": s["time_seconds"]["form_factors"],
+                             "solve_s": s["time_seconds"]["solve"], "rays": s["form_factors"]["rays_cast"],
+                             "links": h.get("links", ""), "bytes_per_element": h.get("bytes_per_element", ""),
+                             "threads": s["threads"], "rays_per_element": args.rays,
+                             "relative_rms_vs_gauss_seidel": ""})
+                print(rows[-1], flush=True)
+            if "gauss-seidel" in solutions:
+                for r in rows:
+                    if r["target_elements"] == n and r["solver"] != "gauss-seidel":
+                        r["relative_rms_vs_gauss_seidel"] = relative_rms(solutions[r["solver"]],
+                                                                         solutions["gauss-seidel"])
+    tmp = os.path.join(args.out, "hierarchical_scale.csv.tmp")
+    with open(tmp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(tmp, os.path.join(args.out, "hierarchical_scale.csv"))
+    fits = {}
+    for solver in SOLVERS:
+        mine = [r for r in rows if r["solver"] == solver]
+        if len(mine) >= 2:
+            fits[solver] = {k: fit_exponent([r["elements"] for r in mine], [r[k] for r in mine])
+                            for k in ("wall_s", "peak_mib")}
+    with open(os.path.join(args.out, "hierarchical_scale_fit.json"), "w") as f:
+        json.dump(fits, f, indent=2)
+    print("fitted exponents (quantity ~ N^k):", json.dumps(fits))
+    if all(s in fits for s in SOLVERS if any(r["solver"] == s for r in rows)):
+        plot_png(os.path.join(args.out, "hierarchical_scale.png"), rows, fits,
+                 "Generated room (%d boxes), %d rays, %d threads: hierarchical against the row solvers"
+                 % (args.boxes, args.rays, rows[0]["threads"]))
+
+
+if __name__ == "__main__":
+    main()
