@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <numeric>
@@ -66,6 +67,10 @@ uint64_t LinkFormFactors::computeReceiver(LinkSet& links, int receiver) const {
   float* direction[3] = {&coords[3 * n], &coords[4 * n], &coords[5 * n]};
   const Eigen::Vector3d& centre = rays_.centre();
   int cast = 0;
+  int leaf = -1;
+  std::array<Eigen::Vector3d, 3> corners;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  Frame frame(normal);
   for (int k = 0; k < n; ++k) {
     const double at = lo + (hi - lo) * (k + rng.uniform()) / n;
     const auto it =
@@ -82,10 +87,15 @@ uint64_t LinkFormFactors::computeReceiver(LinkSet& links, int receiver) const {
       u2 = rng.uniform();
     }
     if (exposure_ && exposure_->buried(e, s, t)) continue;  // shoots from exposed parts only
-    const Eigen::Vector3d normal = mesh_.normal(e);
+    if (e != leaf) {  // origins come in leaf order (stratified along the area): look up once each
+      leaf = e;
+      corners = mesh_.corners(e);
+      normal = mesh_.normal(e);
+      frame = Frame(normal);
+    }
     const Eigen::Vector3d point =
-        rays_.liftOff(uniformPointOnTriangle(mesh_.corners(e), s, t), normal, normal) - centre;
-    const Eigen::Vector3d dir = Frame(normal).toWorld(cosineWeightedDirection(u1, u2));
+        rays_.liftOff(uniformPointOnTriangle(corners, s, t), normal, normal) - centre;
+    const Eigen::Vector3d dir = frame.toWorld(cosineWeightedDirection(u1, u2));
     for (int a = 0; a < 3; ++a) {
       origin[a][cast] = static_cast<float>(point[a]);
       direction[a][cast] = static_cast<float>(dir[a]);
