@@ -24,17 +24,10 @@ import subprocess
 import sys
 import tempfile
 
+from growth import fit_exponent  # bench/growth.py: least-squares slope in log–log
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SOLVERS = ("hierarchical", "gauss-seidel", "progressive")
-
-
-def fit_exponent(xs, ys):
-    """Least-squares slope of log y against log x."""
-    lx = [math.log(x) for x in xs]
-    ly = [math.log(max(y, 1e-9)) for y in ys]
-    mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
-    sxx = sum((a - mx) ** 2 for a in lx)
-    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sxx if sxx > 0 else float("nan")
 
 
 def read_radiosity(path):

@@ -15,6 +15,7 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/output/image_io.h"
 #include "radiosity/pipeline/saved_solution.h"
 #include "radiosity/render/camera.h"
@@ -29,9 +30,6 @@ namespace rad {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 struct RenderCommandOptions {
   SolveOptions solve;
@@ -245,8 +243,8 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   Rgb mean;
   for (const Rgb& p : render.image.pixels) mean += p;
   mean = mean / static_cast<double>(render.image.pixels.size());
-  const double outputSeconds = since(t);
-  const double totalSeconds = since(start);
+  const double outputSeconds = secondsSince(t);
+  const double totalSeconds = secondsSince(start);
 
   nlohmann::json report = {
       {"scene", o.solve.scenePath},

@@ -4,15 +4,13 @@
 #include <optional>
 
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/scene_mesh.h"
 
 namespace rad {
 namespace {
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 }  // namespace
 
 RenderWorld::RenderWorld(SolveOptions solve, const std::string& cameraFile, SolutionSource source)
@@ -38,12 +36,12 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
       solved_ = std::make_unique<SolveResult>(solveOrReuse(std::move(scene), solve_, source_));
       for (const SkipNote& note : solved_->report.skipped)  // logged by solveOrReuse
         if (note.what == "radiosity solve") skipped_.push_back(note);
-      solveSeconds_ += since(t);
+      solveSeconds_ += secondsSince(t);
       const auto b = Clock::now();
       const Solution& solution = solved_->solution;
       solvedCaster_ = std::make_unique<RayCaster>(*solution.mesh, solution.scene);
       solvedView_ = std::make_unique<RenderScene>(solution.scene, *solution.mesh, *solvedCaster_);
-      bvhSeconds_ += since(b);
+      bvhSeconds_ += secondsSince(b);
     }
     if (!motionSpec_.empty())
       skip("motion blur for --method " + method.name, "only methods that sample time render it");
@@ -62,7 +60,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
       const auto b = Clock::now();
       motionCaster_ = std::make_unique<RayCaster>(*mesh_, *scene_, &motion_->vertices());
       motionView_ = std::make_unique<RenderScene>(*scene_, *mesh_, *motionCaster_, motion_.get());
-      bvhSeconds_ += since(b);
+      bvhSeconds_ += secondsSince(b);
       logInfo("motion blur: " + std::to_string(motionSpec_.objects.size()) + " moving object(s), " +
               std::to_string(motion_->movingElements()) + " elements, shutter [" +
               std::to_string(motionSpec_.shutterOpen) + ", " +
@@ -76,7 +74,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
     const auto b = Clock::now();
     caster_ = std::make_unique<RayCaster>(*mesh_, *scene_);
     view_ = std::make_unique<RenderScene>(*scene_, *mesh_, *caster_);
-    bvhSeconds_ += since(b);
+    bvhSeconds_ += secondsSince(b);
   }
   return {view_.get(), nullptr};
 }

@@ -2,28 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace rad {
 namespace {
 
-// Where the box lies against the plane through `point` with `normal`: wholly on or behind it (to
-// a small fraction of the box's size: coplanar neighbours exchange nothing either), partly behind
-// it, or wholly in front.
-enum class Side { Behind, Straddles, Front };
-Side sideOf(const HierarchyNode& box, const Eigen::Vector3f& point, const Eigen::Vector3f& normal,
-            float slack) {
-  float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+// Whether every corner of the box lies on or behind the plane through `point` with `normal` (to a
+// small fraction of the box's size: coplanar neighbours exchange nothing either).
+bool whollyBehind(const HierarchyNode& box, const Eigen::Vector3f& point,
+                  const Eigen::Vector3f& normal, float slack) {
   for (int corner = 0; corner < 8; ++corner) {
     const Eigen::Vector3f p((corner & 1) ? box.boundsMax.x() : box.boundsMin.x(),
                             (corner & 2) ? box.boundsMax.y() : box.boundsMin.y(),
                             (corner & 4) ? box.boundsMax.z() : box.boundsMin.z());
-    const float h = normal.dot(p - point);
-    lo = std::min(lo, h);
-    hi = std::max(hi, h);
+    if (normal.dot(p - point) > slack) return false;
   }
-  if (hi <= slack) return Side::Behind;
-  return lo < -slack ? Side::Straddles : Side::Front;
+  return true;
 }
 
 }  // namespace
@@ -36,9 +29,8 @@ LinkOracle::Exchange LinkOracle::estimate(int receiver, int source, double& powe
   if (reflectance_[receiver] <= 0 || r.area <= 0 || s.area <= 0) return Exchange::None;
   const float rr = r.radius(), rs = s.radius();
   const float slack = 1e-5f * (rr + rs);
-  if (sideOf(s, r.centroid, r.normal, slack) == Side::Behind) return Exchange::None;
-  if (!s.isCluster() && sideOf(r, s.centroid, s.normal, slack) == Side::Behind)
-    return Exchange::None;
+  if (whollyBehind(s, r.centroid, r.normal, slack)) return Exchange::None;
+  if (!s.isCluster() && whollyBehind(r, s.centroid, s.normal, slack)) return Exchange::None;
   const double light = static_cast<double>(reflectance_[receiver]) * radiosity_[source] * r.area;
   const Eigen::Vector3f between = s.centroid - r.centroid;
   const double d = between.norm();

@@ -5,17 +5,11 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/hierarchical/hierarchical_radiosity.h"
 
 namespace rad {
-namespace {
-
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-}  // namespace
 
 void solveHierarchical(const SolveOptions& options, const RayCaster& rays,
                        const ElementExposure& exposure, const IterationLimits& limits,
@@ -31,7 +25,7 @@ void solveHierarchical(const SolveOptions& options, const RayCaster& rays,
   hierarchical.seed = options.seed;
   hierarchical.exposure = &exposure;
   HierarchicalRadiosity hr(*solution.mesh, rays, solution.problem, hierarchical);
-  report.times.formFactors += since(t);
+  report.times.formFactors += secondsSince(t);
   const NodeHierarchy& tree = hr.tree();
   logInfo("hierarchy: " + std::to_string(tree.size()) + " nodes (" +
           std::to_string(tree.clusterCount()) + " clusters, depth " + std::to_string(tree.depth()) +
@@ -44,7 +38,7 @@ void solveHierarchical(const SolveOptions& options, const RayCaster& rays,
     if (!report.converged || hr.passes() >= kMaxLinkPasses) break;
     t = Clock::now();
     const int64_t split = hr.refineLinks();
-    report.times.formFactors += since(t);
+    report.times.formFactors += secondsSince(t);
     if (split == 0) break;
     logInfo("links refined: " + std::to_string(split) + " split, " +
             std::to_string(hr.links().size()) + " links");

@@ -14,6 +14,7 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/progress.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/element_size.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
@@ -29,9 +30,6 @@ namespace rad {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // An element's identity across meshes: its material and the exact bits of its corners. Uniform
 // meshing is deterministic, so a polygon that did not change meshes into the same elements.
@@ -111,7 +109,7 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
                                         static_cast<size_t>(report.threads));
   auto t = Clock::now();
   solution.scene = loadScene(options.scenePath, options.lights, options.twoSided);
-  report.times.load = since(t);
+  report.times.load = secondsSince(t);
   checkSceneLimits(solution.scene);
   requireEmitter(solution.scene);
   if (solution.scene.hasSpecular())
@@ -135,7 +133,7 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   report.elementSize = meshed.sizing.edge;
   report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
   report.elementsBeforeRefinement = n;
-  report.times.mesh = since(t);
+  report.times.mesh = secondsSince(t);
 
   // Which elements stayed put; the region of the edit: the moved or added elements where they
   // are now, and the kept elements no longer there where they were.
@@ -165,7 +163,7 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
 
   t = Clock::now();
   const RayCaster rays(mesh, solution.scene);
-  report.times.bvh = since(t);
+  report.times.bvh = secondsSince(t);
   const ElementExposure exposure = solveExposure(options, mesh, rays);
   report.exposureProbeRays = exposure.probeRays();
   solution.problem = makeProblem(solution.scene, mesh, &exposure);
@@ -223,7 +221,7 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
       ++update.rowsReused;
     }
   }
-  const double testSeconds = since(t);
+  const double testSeconds = secondsSince(t);
   logInfo("update: " + std::to_string(update.rowsReused) + " rows reused as they were, " +
           std::to_string(update.rowsUpdated) + " updated ray by ray (" +
           std::to_string(update.raysChanged) + " rays changed their hit), " +
@@ -254,8 +252,8 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   reportSolver(*solver, report);
   formFactors.report(report, options.solver);
   report.shooters = n;
-  report.times.solve = since(t);
-  report.times.total = since(start);
+  report.times.solve = secondsSince(t);
+  report.times.total = secondsSince(start);
   result.kept = std::move(next);
   return result;
 }

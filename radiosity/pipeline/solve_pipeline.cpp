@@ -10,6 +10,7 @@
 
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/hierarchical_solve.h"
@@ -29,9 +30,6 @@ namespace rad {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // The scene's own limits and what it lets the run skip, before any meshing.
 void checkScene(const Scene& scene, const SolveOptions& options, SolveReport& report) {
@@ -102,7 +100,7 @@ void warnIfNotConverged(const IterationLimits& limits, const Solution& solution,
 SolveResult runSolve(const SolveOptions& options) {
   const auto start = Clock::now();
   Scene scene = loadScene(options.scenePath, options.lights, options.twoSided);
-  const double loadSeconds = since(start);
+  const double loadSeconds = secondsSince(start);
   SolveResult result = solveScene(std::move(scene), options);
   result.report.times.load = loadSeconds;
   result.report.times.total += loadSeconds;
@@ -127,7 +125,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   report.maxArea = meshed.maxArea;
   report.elementSize = meshed.sizing.edge;
   report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
-  report.times.mesh = since(t);
+  report.times.mesh = secondsSince(t);
   logInfo("mesh: " + std::to_string(solution.mesh->patchCount()) + " patches, " +
           std::to_string(solution.mesh->elementCount()) + " elements (element size " +
           formatNumber(report.elementSize) + ", set by " +
@@ -138,7 +136,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   throwIfInterrupted();
   t = Clock::now();
   const RayCaster rays(*solution.mesh, solution.scene);
-  report.times.bvh = since(t);
+  report.times.bvh = secondsSince(t);
   const ElementExposure exposure = solveExposure(options, *solution.mesh, rays);
   noteBuriedParts(exposure, *solution.mesh, report);
   solution.problem = makeProblem(solution.scene, *solution.mesh, &exposure);
@@ -154,7 +152,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     throwIfInterrupted();
     t = Clock::now();
     solveLightGroups(groups, formFactors, options, limits, solution, report);
-    const double solveAndRows = since(t);
+    const double solveAndRows = secondsSince(t);
     formFactors.report(report, options.solver);
     report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
   } else {
@@ -172,9 +170,9 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
       t = Clock::now();
       solveHierarchical(options, rays, exposure, limits, solution, report);
       directLight.report(report);
-      report.times.solve = std::max(0.0, since(t) - report.times.formFactors);
+      report.times.solve = std::max(0.0, secondsSince(t) - report.times.formFactors);
       warnIfNotConverged(limits, solution, report);
-      report.times.total = since(start);
+      report.times.total = secondsSince(start);
       return result;
     }
     FormFactorStage formFactors(solution.scene, *solution.mesh, rays, solution.problem, options,
@@ -195,7 +193,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
         break;
     }
     refinement.finish(report);
-    const double solveAndRows = since(t);
+    const double solveAndRows = secondsSince(t);
     if (kept) kept->rows = formFactors.takeAllRows();  // the rows shooting never asked for too
     formFactors.report(report, options.solver);
     if (!kept) directLight.report(report);
@@ -206,7 +204,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     result.kept = std::move(kept);
   }
   warnIfNotConverged(limits, solution, report);
-  report.times.total = since(start);
+  report.times.total = secondsSince(start);
   return result;
 }
 
