@@ -409,9 +409,8 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
       Rng pathRng(
           streamKey(options_.seed, static_cast<uint64_t>(element), static_cast<uint64_t>(k) + 1));
       int rays = 0;
-      const SpecularPathEnd end =
-          traceThroughSpecular(rays_, normals_, options_.specular, origin, direction, element,
-                               pathRng, options_.maxSpecularDepth, &rays);
+      const SpecularPathEnd end = traceThroughSpecular(rays_, normals_, options_.specular, origin,
+                                                       direction, element, pathRng, &rays);
       firstHit[k] = -1;
       if (options_.exposure != nullptr &&
           options_.exposure->buried(element, b.u[2][i], b.u[3][i])) {

@@ -29,7 +29,6 @@ struct HemisphereOptions {
   // Per-element specular behaviour; empty when the scene has no mirror or glass, and then no
   // ray ever continues past its first hit.
   std::vector<SpecularSurface> specular = {};
-  int maxSpecularDepth = 16;
   // Optional: the buried parts of elements (element_exposure.h). Rays whose origin lies in a
   // buried cell are dropped and the row is the fraction of the others, so an element shoots from
   // its exposed part only. Must outlive the form factors.

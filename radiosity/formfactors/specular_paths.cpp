@@ -2,16 +2,18 @@
 
 #include <cmath>
 
+#include "radiosity/core/russian_roulette.h"
+
 namespace rad {
 
 SpecularPathEnd traceThroughSpecular(const RayCaster& rays,
                                      const std::vector<Eigen::Vector3d>& normals,
                                      const std::vector<SpecularSurface>& surfaces,
                                      Eigen::Vector3d origin, Eigen::Vector3d direction, int from,
-                                     Rng& rng, int maxDepth, int* raysCast) {
+                                     Rng& rng, int* raysCast) {
   SpecularPathEnd end;
   int previous = from;
-  for (int depth = 0; depth <= maxDepth; ++depth) {
+  for (;;) {
     const RayHit hit = rays.closestHit(origin, direction);
     ++*raysCast;
     if (!hit.hit() || hit.element == previous) return {};
@@ -24,7 +26,10 @@ SpecularPathEnd traceThroughSpecular(const RayCaster& rays,
       end.element = j;
       return end;
     }
-    if (depth == maxDepth) return {};
+    if (end.specularBounces >= kSpecularBounceLimit) return {};
+    if (end.specularBounces >= kSpecularRouletteAfter &&
+        !survivesRouletteWithinOne(end.weight, rng.uniform()))
+      return {};
     const Eigen::Vector3d point = origin + hit.distance * direction;
     if (surface.kind == SpecularSurface::Kind::Mirror) {
       if (cosine >= 0) return {};  // one-sided mirror
@@ -50,7 +55,6 @@ SpecularPathEnd traceThroughSpecular(const RayCaster& rays,
     ++end.specularBounces;
     previous = j;
   }
-  return {};
 }
 
 }  // namespace rad

@@ -20,8 +20,10 @@ struct SpecularSurface {
 };
 
 // Where a ray ends after mirrors and glass: the first diffuse element whose front it reaches
-// (element −1 if it escapes, hits a back face or exceeds the depth), and the specular
-// reflectance and transmittance it picked up on the way.
+// (element −1 if it escapes, hits a back face, ends in Russian roulette or bounces
+// kSpecularBounceLimit times), and the specular reflectance and transmittance it picked up on the
+// way (divided by the roulette's survival probabilities past kSpecularRouletteAfter bounces,
+// never above 1: survivesRouletteWithinOne).
 struct SpecularPathEnd {
   int element = -1;
   Rgb weight = Rgb::all(1);
@@ -36,6 +38,6 @@ SpecularPathEnd traceThroughSpecular(const RayCaster& rays,
                                      const std::vector<Eigen::Vector3d>& normals,
                                      const std::vector<SpecularSurface>& surfaces,
                                      Eigen::Vector3d origin, Eigen::Vector3d direction, int from,
-                                     Rng& rng, int maxDepth, int* raysCast);
+                                     Rng& rng, int* raysCast);
 
 }  // namespace rad

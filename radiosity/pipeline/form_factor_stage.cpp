@@ -19,7 +19,7 @@ FormFactorStage::FormFactorStage(const Scene& scene, const PatchMesh& mesh, cons
           {options.raysPerElement, options.seed,
            rayMultipliers.empty() ? emitterRayMultipliers(problem) : std::move(rayMultipliers),
            scene.hasSpecular() ? specularSurfaces(scene, mesh) : std::vector<SpecularSurface>(),
-           HemisphereOptions().maxSpecularDepth, exposure}),
+           exposure}),
       cache_(hemisphere_) {
   if (options.formFactors != FormFactorMethod::Analytic) return;
   analytic_ = std::make_unique<AnalyticPatchShots>(

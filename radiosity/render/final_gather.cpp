@@ -231,8 +231,10 @@ Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direc
                                                                      gathersPerLight));
     }
     if (hit.material->isSpecular()) {
-      if (depth >= options_.maxSpecularDepth ||
-          !continueSpecular(scene_, hit, origin, direction, weight, [&] { return rng.uniform(); }))
+      if (depth >= kSpecularBounceLimit ||
+          (depth >= kSpecularRouletteAfter && !survivesRouletteWithinOne(weight, rng.uniform())))
+        return {};
+      if (!continueSpecular(scene_, hit, origin, direction, weight, [&] { return rng.uniform(); }))
         return {};
       viaSpecular = true;
       continue;
@@ -331,8 +333,10 @@ Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vecto
     if (!hit.hit()) return weight * scene_.lights().escapedRadiance(direction);  // the sky
     const Material& m = *hit.material;
     if (m.isSpecular()) {
-      if (depth >= options_.maxSpecularDepth ||
-          !continueSpecular(scene_, hit, origin, direction, weight,
+      if (depth >= kSpecularBounceLimit ||
+          (depth >= kSpecularRouletteAfter && !survivesRouletteWithinOne(weight, sampler.get1D())))
+        return {};
+      if (!continueSpecular(scene_, hit, origin, direction, weight,
                             [&] { return sampler.get1D(); }))
         return {};
       continue;

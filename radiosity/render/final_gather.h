@@ -22,12 +22,12 @@ struct FinalGatherOptions {
   // box: docs/benchmarks.md, "Error against time"); the MIS weights count the rays of each kind
   // (power heuristic with n·pdf), so any count stays unbiased.
   int lightRays = 0;
-  int maxSpecularDepth = 16;  // mirror/glass bounces an eye or gather ray may take
 };
 
 // The eye pass over a radiosity solution (B per element, stored on the mesh): L(D|S)*E from the
 // camera, with the diffuse transport read from the solution. Mirrors and glass continue the ray,
-// so they show the radiosity world, emitters included.
+// so they show the radiosity world, emitters included (past kSpecularRouletteAfter bounces by
+// Russian roulette, with no cut-off).
 class FinalGather : public Integrator {
  public:
   // `radiosity`: B per element (W/m²); emission E = π·Ke comes from the materials.

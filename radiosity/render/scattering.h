@@ -6,6 +6,7 @@
 
 #include "radiosity/core/fresnel.h"
 #include "radiosity/core/rgb.h"
+#include "radiosity/core/russian_roulette.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/material.h"
 
@@ -91,20 +92,6 @@ bool continueSpecular(const RenderScene& scene, const SurfaceHit& hit, Eigen::Ve
   throughput = throughput * step.weight;
   origin = step.origin;
   direction = step.direction;
-  return true;
-}
-
-// A specular chain longer than this plays Russian roulette at every further step (methods
-// without a depth limit), so glass with total internal reflection cannot trap a path forever
-// (and no fixed cut-off biases it).
-constexpr int kSpecularRouletteAfter = 8;
-
-// Russian roulette with `u` uniform in [0, 1): the path goes on with probability
-// min(0.95, max throughput), its throughput divided by that probability.
-inline bool survivesRoulette(Rgb& throughput, double u) {
-  const double q = std::min(0.95, throughput.maxComponent());
-  if (u >= q) return false;
-  throughput *= 1.0 / q;
   return true;
 }
 

@@ -6,6 +6,7 @@
 #include "radiosity/formfactors/form_factor_cache.h"
 #include "radiosity/formfactors/hemisphere_form_factors.h"
 #include "radiosity/formfactors/point_to_polygon.h"
+#include "radiosity/formfactors/specular_paths.h"
 #include "radiosity/solvers/progressive_solver.h"
 
 namespace rad {
@@ -124,6 +125,70 @@ TEST(ExtendedFormFactors, FresnelAtNormalIncidenceAndTotalInternalReflection) {
   EXPECT_NEAR(fresnelDielectric(1.0, 1.5, 1.0), 0.04, 1e-12);
   EXPECT_EQ(fresnelDielectric(std::cos(50 * M_PI / 180), 1.5, 1.0), 1.0);  // critical angle 41.8°
   EXPECT_NEAR(fresnelDielectric(0.0, 1.0, 1.5), 1.0, 1e-12);               // grazing
+}
+
+// A corridor of two mirrors (Ks = 0.95) facing each other, 1 m apart, and a diffuse wall closing
+// its far end 10 m away: a ray leaving at a shallow slope reaches the wall after about 40
+// reflections, carrying 0.95^40 of its light. Past kSpecularRouletteAfter bounces it plays Russian
+// roulette on its weight, so it arrives with weight 1 or not at all: the mean over many rays is
+// still 0.95^bounces, and no ray ever carries more than 1 (rows conserve energy ray by ray). With
+// the former cut-off at 16 bounces no ray arrived: a glass panel seen edge-on, which guides light
+// the same way, rendered black.
+TEST(ExtendedFormFactors, LongMirrorChainsCarryTheirLightOnAverageWithNoCutOff) {
+  enum { kMirrorFloor, kMirrorCeiling, kWall, kSource };
+  PatchMesh mesh({{0, 0, -1},
+                  {0, 0, 1},
+                  {10.5, 0, 1},
+                  {10.5, 0, -1},  // y = 0, facing +y
+                  {0, 1, -1},
+                  {10.5, 1, -1},
+                  {10.5, 1, 1},
+                  {0, 1, 1},  // y = 1, facing −y
+                  {10, 0, -1},
+                  {10, 0, 1},
+                  {10, 1, 1},
+                  {10, 1, -1},  // x = 10, facing −x
+                  {-5, -5, -5},
+                  {-4, -5, -5},
+                  {-4, -4, -5},
+                  {-5, -4, -5}},  // out of the way
+                 {{{0, 1, 2, 3}, kMirrorFloor},
+                  {{4, 5, 6, 7}, kMirrorCeiling},
+                  {{8, 9, 10, 11}, kWall},
+                  {{12, 13, 14, 15}, kSource}});
+  mesh.subdivideUniform(2.0);
+  std::vector<SpecularSurface> surfaces(mesh.elementCount());
+  std::vector<Eigen::Vector3d> normals(mesh.elementCount());
+  int source = -1;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    normals[e] = mesh.normal(e);
+    if (mesh.material(e) <= kMirrorCeiling)
+      surfaces[e] = {SpecularSurface::Kind::Mirror, Rgb::all(0.95), Rgb::all(1), 1};
+    if (mesh.material(e) == kSource) source = e;
+  }
+  const RayCaster rays(mesh);
+  const Eigen::Vector3d origin(0.1, 0.5, 0), direction = Eigen::Vector3d(0.25, 1, 0).normalized();
+  constexpr int kPaths = 10000;
+  double sum = 0;
+  int arrived = 0, bounces = 0;
+  for (int k = 0; k < kPaths; ++k) {
+    Rng rng(streamKey(7, k));
+    int cast = 0;
+    const SpecularPathEnd end =
+        traceThroughSpecular(rays, normals, surfaces, origin, direction, source, rng, &cast);
+    if (end.element < 0) continue;
+    ASSERT_EQ(mesh.material(end.element), kWall);
+    ASSERT_LE(end.weight.maxComponent(), 1 + 1e-12);
+    ++arrived;
+    bounces = end.specularBounces;  // the same for every ray: they all take the one path
+    sum += end.weight.r;
+  }
+  ASSERT_GT(arrived, 0);
+  EXPECT_GT(bounces, 30);
+  // Per ray: 1 with probability p = 0.95^bounces (about 0.13), else 0: the standard error of the
+  // mean is sqrt(p(1 − p)/kPaths), about 0.0033. Four of them:
+  const double p = std::pow(0.95, bounces);
+  EXPECT_NEAR(sum / kPaths, p, 4 * std::sqrt(p * (1 - p) / kPaths));
 }
 
 }  // namespace
