@@ -12,6 +12,12 @@
 //       and reference, E[(a−ref)²] = E[(a−r)²] + Var(ref)), ε = (0.1·mean(r))²; then the same
 //       without removing v, ε, and the reference's own noise over the "surfaces" pixels of
 //       `rmse`, sqrt(Σ v / Σ r²) there (to remove from that metric in quadrature)
+//   render_compare plain IMAGE.exr REFERENCE.exr VARIANCE.exr [VARIANCE2.exr]
+//       → the plain relative RMSE of bench/peer (issue 17): RMSE / mean of the reference, over all
+//       pixels and channels, with the noise of the variance images removed (their sum Σv
+//       subtracted from Σ(a−r)²: the reference's, and IMAGE's own when it is the mean of two
+//       halves, which leaves the systematic difference alone) and raw; the mean ratio; then the
+//       same three over the "surfaces" pixels of `rmse`
 //   render_compare halves A.exr B.exr OUT.exr OUT_VARIANCE.exr
 //       → OUT = (A+B)/2 and, per pixel, the variance of that mean, estimated without bias as
 //       (A−B)²/4 (A, B independent renders of the same image with the same settings); prints the
@@ -20,6 +26,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "radiosity/output/image_io.h"
@@ -103,6 +110,24 @@ double relativeMse(const rad::ImageRgb& a, const rad::ImageRgb& r, const rad::Im
   return sum / (3.0 * r.pixels.size());
 }
 
+// sqrt(mean of (a−r)² − v) / mean(r) and the same without v, over the pixels `mask` keeps.
+std::pair<double, double> plainRelativeRmse(const rad::ImageRgb& a, const rad::ImageRgb& r,
+                                            const rad::ImageRgb& variance,
+                                            const std::vector<char>& mask) {
+  double diff2 = 0, noise2 = 0, sum = 0;
+  long count = 0;
+  for (size_t p = 0; p < r.pixels.size(); ++p) {
+    if (!mask[p]) continue;
+    const rad::Rgb d = a.pixels[p] - r.pixels[p];
+    diff2 += (d * d).sum();
+    noise2 += variance.pixels[p].sum();
+    sum += r.pixels[p].sum();
+    count += 3;
+  }
+  const double mean = sum / count;
+  return {std::sqrt(std::max(0.0, diff2 - noise2) / count) / mean, std::sqrt(diff2 / count) / mean};
+}
+
 void requireSameSize(const rad::ImageRgb& a, const rad::ImageRgb& b) {
   if (a.width != b.width || a.height != b.height) throw std::runtime_error("image sizes differ");
 }
@@ -149,6 +174,23 @@ int main(int argc, char** argv) {
                   std::sqrt(noise2 / ref2));
       return 0;
     }
+    if (mode == "plain" && (argc == 5 || argc == 6)) {
+      const rad::ImageRgb a = rad::readExr(argv[2]), r = rad::readExr(argv[3]);
+      rad::ImageRgb v = rad::readExr(argv[4]);
+      requireSameSize(a, r);
+      requireSameSize(v, r);
+      if (argc == 6) {
+        const rad::ImageRgb v2 = rad::readExr(argv[5]);
+        requireSameSize(v2, r);
+        for (size_t p = 0; p < v.pixels.size(); ++p) v.pixels[p] = v.pixels[p] + v2.pixels[p];
+      }
+      const std::vector<char> all(r.pixels.size(), 1), surfaces = surfaceMask(r);
+      const auto [whole, wholeRaw] = plainRelativeRmse(a, r, v, all);
+      const auto [surface, surfaceRaw] = plainRelativeRmse(a, r, v, surfaces);
+      std::printf("%.6f %.6f %.6f %.6f %.6f %.6f\n", whole, wholeRaw, meanRatio(a, r, all), surface,
+                  surfaceRaw, meanRatio(a, r, surfaces));
+      return 0;
+    }
     if (mode == "halves" && argc == 6) {
       const rad::ImageRgb a = rad::readExr(argv[2]), b = rad::readExr(argv[3]);
       requireSameSize(a, b);
@@ -183,7 +225,8 @@ int main(int argc, char** argv) {
     }
     std::fprintf(
         stderr,
-        "usage: render_compare rmse IMAGE REF | relmse IMAGE REF REF_VARIANCE | average A B OUT | "
+        "usage: render_compare rmse IMAGE REF | relmse IMAGE REF REF_VARIANCE | plain IMAGE REF "
+        "VARIANCE [VARIANCE2] | average A B OUT | "
         "halves A B OUT OUT_VARIANCE | pfm IMAGE OUT\n");
     return 2;
   } catch (const std::exception& e) {

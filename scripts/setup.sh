@@ -25,8 +25,9 @@ packages=(
 if [[ " $* " == *" --fuzz "* ]]; then packages+=(clang libclang-rt-14-dev); fi
 # `scripts/setup.sh --format`: clang-format for the formatting check (scripts/check_format.sh).
 if [[ " $* " == *" --format "* ]]; then packages+=(clang-format); fi
-# `scripts/setup.sh --bench`: matplotlib for the benchmark's PNG plots (bench/run_all.sh; issue 8).
-if [[ " $* " == *" --bench "* ]]; then packages+=(python3-matplotlib python3-numpy); fi
+# `scripts/setup.sh --bench`: matplotlib for the benchmark's PNG plots (bench/run_all.sh; issue 8)
+# and Blender (3.4), whose Cycles the side-by-side race renders with (bench/peer/race.py; issue 17).
+if [[ " $* " == *" --bench "* ]]; then packages+=(python3-matplotlib python3-numpy blender); fi
 
 # The Khronos glTF validator for the bake tests (npm, pinned by tools/gltf-validator/package-lock.json),
 # only where node and npm exist; the test that needs it skips with a message otherwise.
