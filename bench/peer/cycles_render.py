@@ -25,7 +25,7 @@ scene show the same physics (docs/peer.md):
     blender -b --factory-startup --python-exit-code 1 --python bench/peer/cycles_render.py -- \\
         SCENE.obj --camera CAMERA.json --spp 64 --out IMAGE.exr [--seed 1] [--threads 2]
         [--sky R G B] [--sun DX DY DZ R G B] [--two-sided | --two-sided-materials A,B]
-        [--report REPORT.json]
+        [--report REPORT.json] [--max-bounces N]
 
 The report holds Blender's version, the seconds spent loading and converting the scene and the
 seconds inside Cycles' render (the driver, bench/peer/race.py, times the whole process too).
@@ -274,7 +274,7 @@ def add_sun(sun, angle_degrees):
     sun_object.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
 
 
-def configure_cycles(spp, seed, threads):
+def configure_cycles(spp, seed, threads, max_bounces):
     scene = bpy.context.scene
     scene.render.engine = "CYCLES"
     cycles = scene.cycles
@@ -293,7 +293,7 @@ def configure_cycles(spp, seed, threads):
     cycles.caustics_refractive = True
     for bounces in ("max_bounces", "diffuse_bounces", "glossy_bounces", "transmission_bounces",
                     "transparent_max_bounces", "volume_bounces"):
-        setattr(cycles, bounces, BOUNCES)
+        setattr(cycles, bounces, max_bounces)
     scene.render.film_transparent = False
     scene.view_settings.view_transform = "Standard"
     scene.view_settings.look = "None"
@@ -326,11 +326,16 @@ def main():
     parser.add_argument("--two-sided", action="store_true")
     parser.add_argument("--two-sided-materials", default="")
     parser.add_argument("--report")
+    # Fewer bounces for checks of one term at a time: 0 is the light seen and direct light (the
+    # project's bounce_sum_1 of --bounces-separate), 1 adds one diffuse bounce (bounce_sum_2).
+    parser.add_argument("--max-bounces", type=int, default=BOUNCES)
     args = parser.parse_args(argv)
     if not os.path.isfile(args.scene):
         fail(f"{args.scene}: no such file")
     if args.spp < 1:
         fail("--spp must be positive")
+    if args.max_bounces < 0:
+        fail("--max-bounces must be at least 0")
 
     start = time.perf_counter()
     bpy.ops.wm.read_factory_settings(use_empty=True)
@@ -340,7 +345,7 @@ def main():
     add_world(args.sky)
     if args.sun:
         add_sun(args.sun, args.sun_angle)
-    configure_cycles(args.spp, args.seed, args.threads)
+    configure_cycles(args.spp, args.seed, args.threads, args.max_bounces)
     scene = bpy.context.scene
     scene.render.filepath = os.path.abspath(args.out)
     scene.render.use_file_extension = False
