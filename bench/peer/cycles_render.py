@@ -365,4 +365,5 @@ def main():
     print("cycles_render: " + json.dumps(report))
 
 
-main()
+if __name__ == "__main__":  # cycles_bake.py imports the conversion
+    main()

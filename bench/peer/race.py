@@ -385,4 +385,5 @@ def main():
     print(f"race: wrote {args.out}/summary.md", file=sys.stderr)
 
 
-main()
+if __name__ == "__main__":  # bake_race.py imports the helpers
+    main()
