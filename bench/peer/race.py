@@ -56,6 +56,7 @@ SCENES = {
         "options": [], "level": 0.02,
         "cycles": [16, 64, 256, 1024], "path": [16, 64, 256],
         "radiosity": [(1, 0, 16), (1, 0, 64), (1, 0, 256), (4, 2, 16), (4, 2, 64), (4, 2, 256)],
+        "adaptive": [(1, 0, 16), (1, 0, 64), (1, 0, 256)],
         "reference_cycles": 2048, "reference_path": 1024},
     "mirror_glass": {
         "obj": os.path.join(ROOT, "data/cornell_box/cornell_box_mirror_glass.obj"),
@@ -81,7 +82,7 @@ SCENES = {
         "reference_cycles": 1024, "reference_path": 1024},
 }
 QUICK = {"cycles": [4, 16], "path": [4, 16], "radiosity": [(1, 0, 4), (1, 0, 16)],
-         "reference_cycles": 64, "reference_path": 64}
+         "adaptive": [(1, 0, 16)], "reference_cycles": 64, "reference_path": 64}
 
 
 def run_timed(args, log):
@@ -104,12 +105,15 @@ def cycles(scene, spp, seed, out, work):
 
 def project(build, scene, method, spp, seed, out, work, gather=1, light_rays=0):
     """One `radiosity render` into a fresh directory (so radiosity solves afresh); its render.exr
-    is moved to `out`."""
+    is moved to `out`. Method "adaptive" is `--method radiosity --adaptive`."""
     directory = tempfile.mkdtemp(dir=work)
     args = [os.path.join(build, "bin/radiosity"), "render", scene["obj"], "--camera", scene["camera"],
-            "--method", method, "--spp", str(spp), "--seed", str(seed), "--out", directory, "-q"]
-    if method == "radiosity":
+            "--method", "path" if method == "path" else "radiosity", "--spp", str(spp), "--seed",
+            str(seed), "--out", directory, "-q"]
+    if method != "path":
         args += ["--gather", str(gather), "--light-rays", str(light_rays)]
+    if method == "adaptive":
+        args.append("--adaptive")
     seconds = run_timed(args + scene["options"], os.path.join(work, "project.log"))
     shutil.move(os.path.join(directory, "render.exr"), out)
     shutil.rmtree(directory)
@@ -168,6 +172,7 @@ def jobs(scene):
     """The runs of one repeat, interleaved: one of each method in turn."""
     lists = [[("cycles", spp, 0, 0) for spp in scene["cycles"]],
              [("radiosity", spp, g, l) for g, l, spp in scene["radiosity"]],
+             [("adaptive", spp, g, l) for g, l, spp in scene.get("adaptive", [])],
              [("path", spp, 0, 0) for spp in scene["path"]]]
     order = []
     while any(lists):
@@ -182,7 +187,8 @@ def method_label(method, gather, light_rays):
         return "Cycles"
     if method == "path":
         return "radiosity render --method path"
-    return f"radiosity render --method radiosity --gather {gather}" + (
+    adaptive = " --adaptive" if method == "adaptive" else ""
+    return f"radiosity render --method radiosity{adaptive} --gather {gather}" + (
         f" --light-rays {light_rays}" if light_rays else "")
 
 
@@ -222,7 +228,7 @@ def plot(name, scene, rows, path):
     fig, axes = plt.subplots(1, 2, figsize=(14, 5.4))
     styles = {"Cycles": ("o-", "#e67e22"), method_label("path", 0, 0): ("^-", "#2c3e50")}
     gathers = sorted({r["label"] for r in rows if "radiosity --" in r["label"]})
-    for label, colour in zip(gathers, ["#c0392b", "#8e44ad", "#16a085"]):
+    for label, colour in zip(gathers, ["#c0392b", "#8e44ad", "#16a085", "#2980b9"]):
         styles[label] = ("s-", colour)
     for ax, (key, title) in zip(axes, (("error", "against a Cycles reference"),
                                        ("error_vs_path", "against the project's path tracer"))):

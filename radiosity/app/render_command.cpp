@@ -3,6 +3,7 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -36,8 +37,9 @@ struct RenderCommandOptions {
   std::string solverName = "progressive";
   std::string method = "radiosity";
   int gather = kRenderGather;
-  int lightRays = 0;  // 0: as many as gather
-  int spp = 0;        // 0: the method's default
+  int lightRays = 0;      // 0: as many as gather
+  int spp = 0;            // 0: the method's default
+  bool adaptive = false;  // --adaptive: spp is the mean, shared out by the pixels' spread
   std::string cameraFile;
   std::vector<double> position, lookAt, up;
   std::optional<double> vfov, lensRadius, focusDistance, exposure;
@@ -50,6 +52,20 @@ struct RenderCommandOptions {
 };
 
 Eigen::Vector3d toVector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
+
+// render.json's `adaptive`: null for a uniform render; else the samples taken per pixel.
+nlohmann::json adaptiveReport(const RenderOutput& render, int spp, bool asked) {
+  if (!asked) return nullptr;
+  if (render.samples.empty())
+    return {{"applied", false}, {"why", "--spp below " + std::to_string(kMinAdaptiveSpp)}};
+  int64_t total = 0;
+  for (int n : render.samples) total += n;
+  return {{"applied", true},
+          {"first_pass_spp", spp / 4},
+          {"mean_spp", double(total) / render.samples.size()},
+          {"max_spp", *std::max_element(render.samples.begin(), render.samples.end())},
+          {"min_spp", *std::min_element(render.samples.begin(), render.samples.end())}};
+}
 
 // The camera from --camera, the scene's sidecar, the scene's own (glTF) or the command line;
 // `source` gets the file it came from ("" for none), which also holds the motion-blur fields.
@@ -167,11 +183,18 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
     skip("light tracing (t = 1)", "it needs a pinhole camera (lens radius 0)");
   RenderSettings settings;
   settings.samplesPerPixel = spp;
+  settings.adaptive = o.adaptive;
   settings.seed = o.solve.seed;
   // Path types and Neumann terms: images beside the main one (written as bounce_*.exr).
   std::vector<ImageRgb> bounceImages;
   RenderOutput render;
   const auto* pathIntegrator = dynamic_cast<const PathIntegrator*>(integrator.get());
+  // The path renderer sums whole light paths per pixel (and bdpt's light tracing into others):
+  // it has no per-pixel second pass.
+  if (o.adaptive && pathIntegrator)
+    throw InputError("--adaptive: --method " + method.name +
+                     " is not sampled adaptively; use it with radiosity, direct, whitted or "
+                     "distribution");
   if (pathIntegrator && (pathFilter || separateBounces)) {
     std::optional<BounceBinning> bounceBins;
     if (separateBounces) bounceBins.emplace(*o.bouncesSeparate);
@@ -262,6 +285,7 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
         {"lens_radius", camera.lensRadius},
         {"focus_distance", camera.focusDistance}}},
       {"samples_per_pixel", spp},
+      {"adaptive", adaptiveReport(render, spp, settings.adaptive)},
       {"gather_rays", radiosity ? o.gather : 0},
       {"light_rays", radiosity && o.gather > 0 ? (o.lightRays > 0 ? o.lightRays : o.gather) : 0},
       {"seed", o.solve.seed},
@@ -364,6 +388,10 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
       ->default_val(o->lightRays);
   cmd->add_option("--spp", o->spp, "Samples per pixel (default: the method's, see --method)")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--adaptive", o->adaptive,
+                "Adaptive pixel sampling: --spp is the mean per pixel; a quarter of it in every "
+                "pixel, the rest shared out in proportion to the spread of the neighbours' samples "
+                "(lights' outlines, shadow edges, noisy gathers); from --spp 8");
   cmd->add_option("--camera", o->cameraFile, "Camera JSON file (default: <scene>.camera.json)");
   cmd->add_option("--position", o->position, "Camera position x y z")->expected(3);
   cmd->add_option("--look-at", o->lookAt, "Point the camera looks at, x y z")->expected(3);

@@ -106,6 +106,26 @@ TEST(CliRenderReport, SkippedWorkIsListed) {
   fs::remove_all(out);
 }
 
+// --adaptive: the report says how the samples were shared out; the mean is the asked --spp (less
+// at most half a sample per pixel of rounding).
+TEST(CliRenderReport, AdaptiveSamplingReportsItsSamples) {
+  const fs::path out = scratchPath("render_adaptive");
+  const auto r = runRadiosity("render " + std::string(RADIOSITY_DATA_DIR) +
+                              "/cornell_box/cornell_box.obj --out " + out.string() +
+                              " --width 32 --height 32 --spp 16 --adaptive --elements 300 "
+                              "--rays 64 -q");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  std::ifstream in(out / "render.json");
+  const auto adaptive = nlohmann::json::parse(in)["adaptive"];
+  ASSERT_TRUE(adaptive.is_object()) << adaptive;
+  EXPECT_TRUE(adaptive["applied"].get<bool>());
+  EXPECT_EQ(adaptive["first_pass_spp"], 4);
+  EXPECT_NEAR(adaptive["mean_spp"].get<double>(), 16, 0.5);
+  EXPECT_GE(adaptive["min_spp"].get<int>(), 4);
+  EXPECT_GT(adaptive["max_spp"].get<int>(), 16);
+  fs::remove_all(out);
+}
+
 TEST(CliRenderErrors, BadCameraFileNamesFileAndLineAndWritesNothing) {
   const fs::path out = scratchPath("render_bad_camera");
   const fs::path camera = scratchPath("bad_camera.json");
@@ -139,6 +159,10 @@ TEST(CliRenderErrors, NoCameraAndBadOptionsAreErrors) {
   r = runRadiosity("render " + kMirrorRoom + " --out " + out.string() + " --light-rays -1");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.stderrText.find("--light-rays must be >= 0"), std::string::npos) << r.stderrText;
+  r = runRadiosity("render " + kMirrorRoom + " --out " + out.string() +
+                   " --method path --adaptive --spp 16");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("--adaptive: --method path"), std::string::npos) << r.stderrText;
   EXPECT_FALSE(fs::exists(out / "render.exr"));
 }
 
