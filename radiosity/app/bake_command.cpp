@@ -56,6 +56,7 @@ struct BakeOptions {
   bool noLightmap = false;
   bool sceneUvs = false;           // bake into the scene's own texture coordinates
   int gather = 0;                  // per-texel final gather rays; 0: interpolate the solution
+  int lightRays = 0;               // per-texel shadow rays of the gather; 0: as many as gather
   std::string solutionDir;         // --solution: reuse the solution `solve` saved there
   std::optional<double> exposure;  // --exposure: fixed instead of automatic
   LightmapContent content = LightmapContent::Radiance;  // --lightmap-content
@@ -195,6 +196,8 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   finishSolveOptions(command, o.solve, o.solverName);
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
   checkDirectionalOptions(command, o);
+  if (o.lightRays > 0 && o.gather == 0)
+    throw InputError("--light-rays is for the per-texel gather: give --gather N too");
   if (o.solve.lightGroups && o.gather > 0)
     throw InputError(
         "--gather with --light-groups: the per-texel gather samples every light at once, so it "
@@ -284,7 +287,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       caster = std::make_unique<const RayCaster>(mesh, solution.scene);
       view = std::make_unique<const RenderScene>(solution.scene, mesh, *caster);
       gather = std::make_unique<const FinalGather>(*view, solution.radiosity,
-                                                   FinalGatherOptions{o.gather, 16});
+                                                   FinalGatherOptions{o.gather, o.lightRays});
       gatherError.assign(layout.pages,
                          std::vector<Rgb>(static_cast<size_t>(layout.width) * layout.height));
     }
@@ -397,26 +400,28 @@ void runBake(const CLI::App& command, BakeOptions& o) {
             std::to_string(layout.rects.size()) + " charts on " + std::to_string(layout.pages) +
             " page(s) of " + std::to_string(layout.width) + "×" + std::to_string(layout.height) +
             " texels of " + formatNumber(layout.texelSize) + " scene units (" + layoutRule + ")");
-    summary["lightmap"] = {{"uvs", o.sceneUvs ? "scene" : "generated"},
-                           {"charts", layout.rects.size()},
-                           {"pages", layout.pages},
-                           {"width", layout.width},
-                           {"height", layout.height},
-                           {"texel_size", layout.texelSize},
-                           {"texel_density", 1 / layout.texelSize},
-                           {"size_rule", layoutRule},
-                           {"padding", layout.padding},
-                           {"dilation", o.dilation},
-                           {"texels_covered", count(TexelState::Covered)},
-                           {"texels_conservative", count(TexelState::Conservative)},
-                           {"texels_dilated", count(TexelState::Dilated)},
-                           {"texels_empty", count(TexelState::Empty)},
-                           {"texels_next_to_two_charts", crowded},
-                           {"chart_seconds", chartSeconds},
-                           {"gather_rays", o.gather},
-                           {"bake_seconds", since(t)},
-                           {"content", lightmapContentName(o.content)},
-                           {"unit", lightmapContentMeaning(o.content)}};
+    summary["lightmap"] = {
+        {"uvs", o.sceneUvs ? "scene" : "generated"},
+        {"charts", layout.rects.size()},
+        {"pages", layout.pages},
+        {"width", layout.width},
+        {"height", layout.height},
+        {"texel_size", layout.texelSize},
+        {"texel_density", 1 / layout.texelSize},
+        {"size_rule", layoutRule},
+        {"padding", layout.padding},
+        {"dilation", o.dilation},
+        {"texels_covered", count(TexelState::Covered)},
+        {"texels_conservative", count(TexelState::Conservative)},
+        {"texels_dilated", count(TexelState::Dilated)},
+        {"texels_empty", count(TexelState::Empty)},
+        {"texels_next_to_two_charts", crowded},
+        {"chart_seconds", chartSeconds},
+        {"gather_rays", o.gather},
+        {"light_rays", o.gather > 0 ? (o.lightRays > 0 ? o.lightRays : o.gather) : 0},
+        {"bake_seconds", since(t)},
+        {"content", lightmapContentName(o.content)},
+        {"unit", lightmapContentMeaning(o.content)}};
     if (o.directional) {
       // L1 SH of the incident radiance per texel, beside the lightmap
       // (render/directional_lightmap).
@@ -586,6 +591,11 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
   bake->add_option("--gather", o->gather,
                    "Per-texel final gather with N rays (and N shadow rays) for sharp shadows; 0: "
                    "interpolate the solution")
+      ->default_val(0)
+      ->check(CLI::NonNegativeNumber);
+  bake->add_option("--light-rays", o->lightRays,
+                   "Shadow rays to the emitters per texel of the --gather, MIS-weighted against "
+                   "the gather rays by their counts; 0: as many as --gather")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
   auto* angle = bake->add_option("--chart-angle", o->chartAngle,

@@ -642,6 +642,26 @@ TEST(CliBakeLightGroups, ScalingAGroupScalesOnlyItsLayer) {
   fs::remove_all(twice.parent_path());
 }
 
+// The per-texel gather takes as many shadow rays as gather rays unless --light-rays says; that
+// option alone (no gather to weigh it against) is an error.
+TEST(CliBake, LightRaysGoWithTheGather) {
+  const fs::path dir = scratchPath("bake_light_rays");
+  const std::string bake = "bake " + kData + "/tests/furnace_box.obj --out " + dir.string() +
+                           " --elements 50 --rays 16 --lightmap-size 32 --quiet ";
+  auto r = runRadiosity(bake + "--light-rays 4");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("--light-rays is for the per-texel gather"), std::string::npos)
+      << r.stderrText;
+  EXPECT_FALSE(fs::exists(dir / "bake.json"));
+  r = runRadiosity(bake + "--gather 8");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  EXPECT_EQ(nlohmann::json::parse(readText(dir / "bake.json"))["lightmap"]["light_rays"], 8);
+  r = runRadiosity(bake + "--gather 8 --light-rays 4");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  EXPECT_EQ(nlohmann::json::parse(readText(dir / "bake.json"))["lightmap"]["light_rays"], 4);
+  fs::remove_all(dir);
+}
+
 TEST(CliBakeLightGroups, RefusesTheGatherAndRefinementAndWritesNothing) {
   const fs::path dir = scratchPath("bake_groups_bad");
   const std::string bake = "bake " + kData + "/cornell_box/cornell_box.obj --out " + dir.string() +
