@@ -12,7 +12,9 @@ mean is the reference, (A-B)^2/4 per texel the variance of that mean, removed fr
   halves); the project fills every texel a triangle touches and dilates, which is not compared.
 - The error is the plain relative RMSE of issue 17 over those texels: sqrt(mean over texels and
   channels of (x - ref)^2, less the reference's variance) / mean(ref); also over the texels away
-  from the emitters (reference below half the brightest), where the light's texels do not dominate.
+  from the emitters (reference below half the brightest), where the light's texels do not dominate,
+  and over the interior texels (not at a chart's border), where Cycles' average over a texel's
+  footprint and the project's value at its centre differ least.
 - Time is the whole process's wall time: for the project loading, meshing, the solve, the bake and
   its exports; for Cycles Blender's start, importing the project's glTF (its UVs) and the bake.
 - Every project bake must have the layout the Cycles bakes were made on (bake.json's lightmap block
@@ -122,17 +124,25 @@ def reference(args, name, scene, options, layout, work):
 
 
 def texel_error(lightmap, ref):
-    """Plain relative RMSE over the compared texels (reference noise removed), the mean ratio, and
-    the error over the texels away from the emitters."""
+    """Plain relative RMSE over the compared texels (reference noise removed), the mean ratio, the
+    error over the texels away from the emitters, and over the interior texels (not at a chart's
+    border: their 4 neighbours baked too), where Cycles' average over the texel's footprint and
+    the project's value at its centre are alike unless the light bends within a texel."""
     mean, variance, mask = ref
     away = mask & (mean.max(axis=2) < 0.5 * mean[mask].max())
+    interior = mask.copy()
+    interior[1:, :] &= mask[:-1, :]
+    interior[:-1, :] &= mask[1:, :]
+    interior[:, 1:] &= mask[:, :-1]
+    interior[:, :-1] &= mask[:, 1:]
 
     def error(where):
         d2 = ((lightmap[where] - mean[where]) ** 2).mean() - variance[where].mean()
         return float(np.sqrt(max(d2, 0.0)) / mean[where].mean())
 
     return {"error": error(mask), "mean_ratio": float(lightmap[mask].mean() / mean[mask].mean()),
-            "error_away_from_emitters": error(away), "texels": int(mask.sum())}
+            "error_away_from_emitters": error(away), "error_interior": error(interior),
+            "texels": int(mask.sum()), "texels_interior": int(interior.sum())}
 
 
 def jobs(options):
@@ -199,7 +209,8 @@ def medians(rows):
         groups.setdefault((r["label"], r["samples"]), []).append(r)
     return [dict({"label": lab, "samples": n, "repeats": len(g)},
                  **{k: statistics.median(r[k] for r in g)
-                    for k in ("seconds", "error", "mean_ratio", "error_away_from_emitters")})
+                    for k in ("seconds", "error", "mean_ratio", "error_away_from_emitters",
+                              "error_interior")})
             for (lab, n), g in groups.items()]
 
 
@@ -207,9 +218,10 @@ def plot(name, options, rows, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(14, 5.4))
+    fig, axes = plt.subplots(1, 3, figsize=(19, 5.4))
     for ax, (key, title) in zip(axes, (("error", "all texels Cycles bakes"),
-                                       ("error_away_from_emitters", "texels away from the emitters"))):
+                                       ("error_away_from_emitters", "texels away from the emitters"),
+                                       ("error_interior", "interior texels (not at a chart border)"))):
         for lab, marker, colour in (("Cycles bake", "o-", "#e67e22"),
                                     ("radiosity bake --gather", "s-", "#c0392b"),
                                     ("radiosity bake (interpolated)", "D", "#16a085")):
@@ -226,7 +238,7 @@ def plot(name, options, rows, path):
         ax.set_yscale("log")
         ax.set_xlabel("wall time of the whole process, s (median of the repeats)")
         ax.set_ylabel("plain relative RMSE of the texels, reference noise removed")
-        ax.set_title(f"{name} lightmap ({options['lightmap_size']}²): {title}", fontsize=10)
+        ax.set_title(f"{name} lightmap ({options['lightmap_size']}²): {title}", fontsize=9)
         ax.grid(True, which="both", alpha=0.25)
     axes[0].legend(fontsize=8)
     fig.suptitle(f"{name}: lightmap error against time, Cycles' bake and the project's, "
@@ -270,10 +282,11 @@ def write_summary(results, out):
                       f"{p['threads']} threads, {p['blender']}; lightmap {p['lightmap_size']}², "
                       f"reference 2 × {p['reference_samples']} samples per texel.", ""]
         lines += ["| method | samples / rays | wall s (median) | texel error | away from emitters | "
-                  "mean ratio |", "| --- | --- | --- | --- | --- | --- |"]
+                  "interior texels | mean ratio |", "| --- | --- | --- | --- | --- | --- | --- |"]
         for r in sorted(result["rows"], key=lambda r: (r["label"], r["samples"])):
             lines.append(f"| {r['label']} | {r['samples']} | {r['seconds']:.1f} | {r['error']:.4f} | "
-                         f"{r['error_away_from_emitters']:.4f} | {r['mean_ratio']:.4f} |")
+                         f"{r['error_away_from_emitters']:.4f} | {r['error_interior']:.4f} | "
+                         f"{r['mean_ratio']:.4f} |")
         lines += ["", f"Time to {result['level']:.0%} texel error:", "",
                   "| method | seconds | Cycles' time / this | how |", "| --- | --- | --- | --- |"]
         for lab, t in result["time_to_level"].items():
