@@ -30,6 +30,7 @@
 #include "radiosity/output/obj_export.h"
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/pipeline/mesh_stage.h"
+#include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/pipeline/resource_limits.h"
 #include "radiosity/pipeline/solution_source.h"
 #include "radiosity/pipeline/solution_tone_map.h"
@@ -122,7 +123,8 @@ std::string lightmapFileName(int page, int pages, const std::string& extension) 
 // the values. Without a gather: the mesh's displayed error (displayedError, the refinement's
 // estimate) of what the texel interpolates, scaled as bakePages forms the value: the radiance's
 // own; the light arriving (H/π) times the texel's ρ where a texture multiplies it; H/π's alone
-// for irradiance content. With --gather: the gather's standard error (`gatherError`, per page and
+// for irradiance content; 0 where the texel is buried (its value, the emission alone, is exact).
+// With --gather: the gather's standard error (`gatherError`, per page and
 // texel; ÷ ρ for irradiance content). The gather reads the solution one bounce away, averaged
 // over many elements, so the mesh's displayed error does not apply there. Left out: the
 // solution's own error (its form-factor rays' noise, its elements' means) where it reaches the
@@ -131,7 +133,8 @@ std::vector<Lightmap> confidencePages(const Solution& solution, const LightmapLa
                                       const VertexInterpolation& interpolation,
                                       const std::vector<Rgb>& vertexValues, int dilation,
                                       LightmapContent content,
-                                      const std::vector<std::vector<Rgb>>& gatherError) {
+                                      const std::vector<std::vector<Rgb>>& gatherError,
+                                      const ElementExposure& exposure) {
   const PatchMesh& mesh = *solution.mesh;
   const Scene& scene = solution.scene;
   const bool irradiance = content == LightmapContent::Irradiance;
@@ -167,6 +170,8 @@ std::vector<Lightmap> confidencePages(const Solution& solution, const LightmapLa
             const Rgb& error = gatherError[page][texel];
             return irradiance ? overRho(error, reflectanceAt(scene, mesh, e, b[1], b[2])) : error;
           }
+          // Buried: exactly the texel's own emission (no light arrives), nothing to be wrong about.
+          if (exposure.buriedAtBarycentric(e, b[1], b[2])) return Rgb();
           if (irradiance) return incidentError[e];
           if (textured && hasReflectanceTexture(scene, mesh, e))
             return reflectanceAt(scene, mesh, e, b[1], b[2]) * incidentError[e];
@@ -278,13 +283,17 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       return reflectanceAt(solution.scene, mesh, e, b[1], b[2]);
     };
     const bool irradiance = o.content == LightmapContent::Irradiance;
-    std::unique_ptr<const RayCaster> caster;
+    // The parts of elements no light reaches (the floor under a box standing on it, the ceiling
+    // behind a one-sided lamp), as the solve finds them: their texels hold no arriving light, not
+    // the interpolated light of the element's exposed part (measured on the Cornell box: 3.3% of
+    // the texels, which made the interpolated lightmap 1.55% brighter than Cycles' bake).
+    auto caster = std::make_unique<const RayCaster>(mesh, solution.scene);
+    const ElementExposure exposure = solveExposure(o.solve, mesh, *caster);
     std::unique_ptr<const RenderScene> view;
     std::unique_ptr<const FinalGather> gather;
     std::vector<std::vector<Rgb>> gatherError;  // per page and texel: the gather's standard error
     const bool textured = irradiance || !solution.scene.textures.empty();
     if (o.gather > 0) {
-      caster = std::make_unique<const RayCaster>(mesh, solution.scene);
       view = std::make_unique<const RenderScene>(solution.scene, mesh, *caster);
       gather = std::make_unique<const FinalGather>(*view, solution.radiosity,
                                                    FinalGatherOptions{o.gather, o.lightRays});
@@ -322,24 +331,23 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                 return irradiance ? incidentLight(out, texelLe, texelRho(e, b)) : out;
               },
               page));
-        } else if (textured) {
+        } else {
           // The interpolated solution, with the texture's detail inside each element (or
-          // without the albedo at all).
+          // without the albedo at all); where the point is buried, what it emits alone.
           pages.push_back(bakeLightmap(
               mesh, layout, interpolation, vertexValues, o.dilation,
               [&](int e, const Eigen::Vector3d& b, size_t) {
+                if (exposure.buriedAtBarycentric(e, b[1], b[2])) return irradiance ? Rgb() : le[e];
                 const auto& v = interpolation.triangle(e);
                 auto at = [&](const std::vector<Rgb>& perVertex) {
                   return perVertex[v[0]] * b[0] + perVertex[v[1]] * b[1] + perVertex[v[2]] * b[2];
                 };
                 if (irradiance) return at(vertexIncident);
-                if (!hasReflectanceTexture(solution.scene, mesh, e)) return at(vertexValues);
+                if (!textured || !hasReflectanceTexture(solution.scene, mesh, e))
+                  return at(vertexValues);
                 return le[e] + texelRho(e, b) * at(vertexIncident);
               },
               page));
-        } else {
-          pages.push_back(
-              bakeLightmap(mesh, layout, interpolation, vertexValues, o.dilation, {}, page));
         }
       }
       return pages;
@@ -349,7 +357,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       // The confidence map: the "error" channel of lightmap.exr, and its summary.
       const auto confidenceStart = std::chrono::steady_clock::now();
       errorPages = confidencePages(solution, layout, interpolation, vertexRadiance, o.dilation,
-                                   o.content, gatherError);
+                                   o.content, gatherError, exposure);
       const ConfidenceSummary c = summariseConfidence(lightmaps, errorPages);
       const std::string includes =
           o.gather > 0
@@ -427,7 +435,6 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       // (render/directional_lightmap).
       t = std::chrono::steady_clock::now();
       if (!view) {
-        caster = std::make_unique<const RayCaster>(mesh, solution.scene);
         view = std::make_unique<const RenderScene>(solution.scene, mesh, *caster);
       }
       nlohmann::json names = nlohmann::json::array();
