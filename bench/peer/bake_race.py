@@ -303,7 +303,7 @@ def read_runs(path):
     return rows
 
 
-def main():
+def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--scenes", default=",".join(SCENES))
     parser.add_argument("--repeats", type=int, default=3)
@@ -313,7 +313,7 @@ def main():
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--replot", action="store_true",
                         help="no runs: the plots and summary again from the CSVs in --out")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     if args.quick:
         args.repeats = 1
         args.out = os.path.join(race.ROOT, "out/peer_quick")

@@ -23,7 +23,9 @@ time, every method), and summary.md / summary.json (times to the scene's level a
 
     /usr/bin/python3 bench/peer/race.py [--scenes cornell_box,mirror_glass,staircase,atrium]
         [--repeats 3] [--build build] [--out bench/peer/results] [--cache bench/peer/cache]
-        [--quick]
+        [--quick] [--no-lightmaps]
+
+Then, unless --no-lightmaps, the lightmap race (bench/peer/bake_race.py) with the same options.
 
 Needs `blender` (scripts/setup.sh --bench installs it) and a Release build (render_compare too).
 --quick: one repeat, small sample counts and references, into out/peer_quick: a smoke run.
@@ -364,6 +366,8 @@ def main():
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("--replot", action="store_true",
                         help="no runs: the plots and summary again from the CSVs in --out")
+    parser.add_argument("--no-lightmaps", action="store_true",
+                        help="images only: not the lightmap race (bake_race.py) after them")
     args = parser.parse_args()
     if args.quick:
         args.repeats = 1
@@ -389,6 +393,10 @@ def main():
             results[name] = race(args, name, scene, work)
             write_summary(results, args.out)
     print(f"race: wrote {args.out}/summary.md", file=sys.stderr)
+    if not args.no_lightmaps:
+        import bake_race  # the lightmaps, with the same repeats, build and directories
+        bake_race.main(["--repeats", str(args.repeats), "--build", args.build, "--out", args.out,
+                        "--cache", args.cache] + (["--quick"] if args.quick else []))
 
 
 if __name__ == "__main__":  # bake_race.py imports the helpers
