@@ -146,13 +146,8 @@ def texel_error(lightmap, ref):
 
 
 def jobs(options):
-    lists = [[("cycles", n) for n in options["cycles"]], [("radiosity", n) for n in options["radiosity"]]]
-    order = []
-    while any(lists):
-        for queue in lists:
-            if queue:
-                order.append(queue.pop(0))
-    return order
+    return race.interleave([[("cycles", n) for n in options["cycles"]],
+                            [("radiosity", n) for n in options["radiosity"]]])
 
 
 def label(method, n):
@@ -228,18 +223,11 @@ def plot(name, options, rows, path):
             line = sorted((r for r in rows if r["label"].startswith(lab)), key=lambda r: r["seconds"])
             if not line:
                 continue
-            ax.plot([r["seconds"] for r in line], [max(r[key], 1e-4) for r in line], marker,
-                    color=colour, label=lab + (" N" if lab.endswith("gather") else ""))
-            for r in line:
-                ax.annotate(str(r["samples"]), (r["seconds"], max(r[key], 1e-4)),
-                            textcoords="offset points", xytext=(4, 4), fontsize=8, color=colour)
-        ax.axhline(options["level"], color="gray", linestyle=":", linewidth=1)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("wall time of the whole process, s (median of the repeats)")
-        ax.set_ylabel("plain relative RMSE of the texels, reference noise removed")
-        ax.set_title(f"{name} lightmap ({options['lightmap_size']}²): {title}", fontsize=9)
-        ax.grid(True, which="both", alpha=0.25)
+            race.plot_line(ax, line, key, "samples", marker, colour,
+                           lab + (" N" if lab.endswith("gather") else ""))
+        race.style_error_axes(ax, options["level"],
+                              "plain relative RMSE of the texels, reference noise removed",
+                              f"{name} lightmap ({options['lightmap_size']}²): {title}")
     axes[0].legend(fontsize=8)
     fig.suptitle(f"{name}: lightmap error against time, Cycles' bake and the project's, "
                  f"{race.THREADS} threads (labels: samples per texel, gather rays)")

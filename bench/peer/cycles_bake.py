@@ -64,11 +64,7 @@ def import_baked(bake_dir, obj_path, two_sided_all, two_sided_names):
     glb = os.path.join(bake_dir, "scene_baked.glb")
     if not os.path.isfile(glb):
         fail(f"{bake_dir}: no scene_baked.glb")
-    specs = {}
-    for path in conventions.mtl_paths(obj_path):
-        if not os.path.isfile(path):
-            fail(f"{obj_path}: mtllib {path} not found")
-        specs.update(conventions.parse_mtl(path))
+    specs = conventions.material_specs(obj_path)
     result = bpy.ops.import_scene.gltf(filepath=glb)
     if "FINISHED" not in result:
         fail(f"Blender's glTF importer did not finish on {glb}: {result}")
@@ -77,24 +73,14 @@ def import_baked(bake_dir, obj_path, two_sided_all, two_sided_names):
         fail(f"{glb}: no mesh imported")
     for obj in meshes:
         mesh = obj.data
-        mesh.polygons.foreach_set("use_smooth", [False] * len(mesh.polygons))
-        if mesh.has_custom_normals:
-            mesh.free_normals_split()
+        conventions.flat_shaded(mesh)
         if len(mesh.uv_layers) < 2:
             fail(f"{glb}: mesh '{mesh.name}' has no TEXCOORD_1 (lightmap UVs)")
         # Textures read the scene's UVs (TEXCOORD_0, the render layer); the bake writes through
         # the lightmap's (TEXCOORD_1, the active layer).
         mesh.uv_layers[0].active_render = True
         mesh.uv_layers.active_index = 1
-    for material in bpy.data.materials:
-        spec = specs.get(material.name)
-        if spec is None and material.name != "default":
-            fail(f"{glb}: material '{material.name}' is not in the scene's MTL files")
-        spec = spec or {}
-        emitter = max(spec.get("Ke", (0, 0, 0))) > 0
-        conventions.build_material(material, spec,
-                                   material.name in two_sided_names or (two_sided_all and
-                                                                        not emitter))
+    conventions.convert_materials(specs, two_sided_all, two_sided_names, glb)
     return meshes
 
 

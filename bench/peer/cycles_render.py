@@ -172,12 +172,38 @@ def build_material(material, spec, two_sided):
     nodes.link(sided.outputs[0], nodes.output.inputs["Surface"])
 
 
-def import_scene(obj_path, two_sided_all, two_sided_names):
+def material_specs(obj_path):
+    """The materials of the OBJ's MTL files, by name."""
     specs = {}
     for path in mtl_paths(obj_path):
         if not os.path.isfile(path):
             fail(f"{obj_path}: mtllib {path} not found")
         specs.update(parse_mtl(path))
+    return specs
+
+
+def flat_shaded(mesh):
+    """Face normals only, as the project shades (it ignores the file's normals)."""
+    mesh.polygons.foreach_set("use_smooth", [False] * len(mesh.polygons))
+    if mesh.has_custom_normals:
+        mesh.free_normals_split()  # Blender 3.4
+
+
+def convert_materials(specs, two_sided_all, two_sided_names, source):
+    """Every material of the Blender file rebuilt from its MTL spec (`source` names the file for
+    errors); "default" is the project's material for faces without one."""
+    for material in bpy.data.materials:
+        spec = specs.get(material.name)
+        if spec is None and material.name != "default":
+            fail(f"{source}: material '{material.name}' is not in the scene's MTL files")
+        spec = spec or {}
+        emitter = max(spec.get("Ke", (0, 0, 0))) > 0
+        named = material.name in two_sided_names
+        build_material(material, spec, named or (two_sided_all and not emitter))
+
+
+def import_scene(obj_path, two_sided_all, two_sided_names):
+    specs = material_specs(obj_path)
     result = bpy.ops.wm.obj_import(filepath=obj_path, forward_axis="NEGATIVE_Z", up_axis="Y")
     if "FINISHED" not in result:
         fail(f"Blender's OBJ importer did not finish on {obj_path}: {result}")
@@ -187,9 +213,7 @@ def import_scene(obj_path, two_sided_all, two_sided_names):
     default = None
     for obj in meshes:
         mesh = obj.data
-        mesh.polygons.foreach_set("use_smooth", [False] * len(mesh.polygons))
-        if mesh.has_custom_normals:
-            mesh.free_normals_split()  # Blender 3.4; the project shades with the face normal
+        flat_shaded(mesh)
         if not mesh.materials:
             if default is None:
                 default = bpy.data.materials.new("default")
@@ -198,14 +222,7 @@ def import_scene(obj_path, two_sided_all, two_sided_names):
     for obj in meshes:
         obj.data.calc_loop_triangles()
         triangles += len(obj.data.loop_triangles)
-    for material in bpy.data.materials:
-        spec = specs.get(material.name)
-        if spec is None and material.name != "default":
-            fail(f"material '{material.name}' is not in the scene's MTL files")
-        spec = spec or {}
-        emitter = max(spec.get("Ke", (0, 0, 0))) > 0
-        named = material.name in two_sided_names
-        build_material(material, spec, named or (two_sided_all and not emitter))
+    convert_materials(specs, two_sided_all, two_sided_names, obj_path)
     return len(meshes), triangles, len(bpy.data.materials)
 
 

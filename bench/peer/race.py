@@ -176,6 +176,11 @@ def jobs(scene):
              [("radiosity", spp, g, l) for g, l, spp in scene["radiosity"]],
              [("adaptive", spp, g, l) for g, l, spp in scene.get("adaptive", [])],
              [("path", spp, 0, 0) for spp in scene["path"]]]
+    return interleave(lists)
+
+
+def interleave(lists):
+    """One of each list in turn until all are empty: every tool runs under the same load."""
     order = []
     while any(lists):
         for queue in lists:
@@ -223,6 +228,26 @@ def time_to_level(rows, level, key="error"):
     return t1 * (e1 / level) ** 2, "extrapolated (error ~ time^-1/2)"
 
 
+def plot_line(ax, line, key, count_key, marker, colour, label):
+    """One method's median rows: error `key` against time, each point labelled by its count."""
+    ax.plot([r["seconds"] for r in line], [max(r[key], 1e-4) for r in line], marker, color=colour,
+            label=label)
+    for r in line:
+        ax.annotate(str(r[count_key]), (r["seconds"], max(r[key], 1e-4)), textcoords="offset points",
+                    xytext=(4, 4), fontsize=8, color=colour)
+
+
+def style_error_axes(ax, level, ylabel, title):
+    """Log-log error against wall time, the level dotted."""
+    ax.axhline(level, color="gray", linestyle=":", linewidth=1)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("wall time of the whole process, s (median of the repeats)")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=9)
+    ax.grid(True, which="both", alpha=0.25)
+
+
 def plot(name, scene, rows, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -238,18 +263,9 @@ def plot(name, scene, rows, path):
             line = sorted((r for r in rows if r["label"] == label), key=lambda r: r["spp"])
             if not line:
                 continue
-            ax.plot([r["seconds"] for r in line], [max(r[key], 1e-4) for r in line], marker,
-                    color=colour, label=label)
-            for r in line:
-                ax.annotate(str(r["spp"]), (r["seconds"], max(r[key], 1e-4)), textcoords="offset points",
-                            xytext=(4, 4), fontsize=8, color=colour)
-        ax.axhline(scene["level"], color="gray", linestyle=":", linewidth=1)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("wall time of the whole process, s (median of the repeats)")
-        ax.set_ylabel("plain relative RMSE (RMSE / mean), reference noise removed")
-        ax.set_title(f"{name}: {title}", fontsize=10)
-        ax.grid(True, which="both", alpha=0.25)
+            plot_line(ax, line, key, "spp", marker, colour, label)
+        style_error_axes(ax, scene["level"], "plain relative RMSE (RMSE / mean), reference noise removed",
+                         f"{name}: {title}")
     axes[0].legend(fontsize=8)
     fig.suptitle(f"{name}: error against time, Cycles and the project interleaved in one run, "
                  f"{THREADS} threads (labels: samples per pixel)")
