@@ -26,7 +26,9 @@
 #include <vtkWindowToImageFilter.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -101,6 +103,7 @@ std::string SolutionViewer::keyHelp() {
          "o        patch outlines on/off\n"
          "u        back faces culled / shown\n"
          "p        pick the element under the cursor: print it, draw its form-factor rays\n"
+         "         (hierarchical: the links it gathers over)\n"
          "l        draw the rays of the last shot\n"
          "x        clear the rays\n"
          "i        light probes on/off (view DIR with probes.bin, or --probes FILE)\n"
@@ -358,6 +361,8 @@ void SolutionViewer::refreshStatus() {
     s << " | " << live_->solverName() << ": " << live_->iterations() << " iterations, "
       << (h.empty() ? 0.0 : h.back()) << (live_->converged() ? " (converged)" : "")
       << (running_ ? " running" : "") << (ambient_ ? " + ambient" : "");
+  } else if (options_.linksOf) {
+    s << " | hierarchical solve, p: an element's links";
   } else {
     s << " | saved solution";
   }
@@ -376,19 +381,20 @@ void SolutionViewer::say(const std::string& message) {
   refreshStatus();
 }
 
-void SolutionViewer::setRays(const std::vector<RaySegment>& rays) {
+void SolutionViewer::drawLines(
+    const std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>& segments,
+    const std::vector<std::array<unsigned char, 3>>& colour) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   auto lines = vtkSmartPointer<vtkCellArray>::New();
   auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
   colours->SetNumberOfComponents(3);
   colours->SetName("colour");
-  for (const RaySegment& r : rays) {
-    const vtkIdType a = points->InsertNextPoint(r.from.data());
-    const vtkIdType b = points->InsertNextPoint(r.to.data());
+  for (size_t k = 0; k < segments.size(); ++k) {
+    const vtkIdType a = points->InsertNextPoint(segments[k].first.data());
+    const vtkIdType b = points->InsertNextPoint(segments[k].second.data());
     const vtkIdType line[2] = {a, b};
     lines->InsertNextCell(2, line);
-    const unsigned char hit[3] = {255, 220, 40}, escaped[3] = {150, 150, 150};
-    colours->InsertNextTypedTuple(r.hit ? hit : escaped);
+    colours->InsertNextTypedTuple(colour[k].data());
   }
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
@@ -398,13 +404,60 @@ void SolutionViewer::setRays(const std::vector<RaySegment>& rays) {
   mapper->SetInputData(data);
   mapper->SetColorModeToDirectScalars();
   mapper->SetScalarModeToUseCellData();
-  rays_->SetVisibility(!rays.empty());
+  rays_->SetVisibility(!segments.empty());
+}
+
+void SolutionViewer::setRays(const std::vector<RaySegment>& rays) {
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
+  std::vector<std::array<unsigned char, 3>> colours;
+  for (const RaySegment& r : rays) {
+    segments.emplace_back(r.from, r.to);
+    colours.push_back(r.hit ? std::array<unsigned char, 3>{255, 220, 40}
+                            : std::array<unsigned char, 3>{150, 150, 150});
+  }
+  rays_->GetProperty()->SetLineWidth(1);
+  drawLines(segments, colours);
+}
+
+void SolutionViewer::setLinks(const std::vector<LinkSegment>& links) {
+  // Yellow to surfaces, cyan to clusters; the links that bring little are dimmed, so the ones
+  // that light the element stand out.
+  double strongest = 0;
+  for (const LinkSegment& l : links) strongest = std::max(strongest, l.share);
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
+  std::vector<std::array<unsigned char, 3>> colours;
+  for (const LinkSegment& l : links) {
+    const double weight = 0.55 + 0.45 * (strongest > 0 ? std::sqrt(l.share / strongest) : 1.0);
+    const double base[3] = {l.cluster ? 60.0 : 255.0, l.cluster ? 200.0 : 220.0,
+                            l.cluster ? 255.0 : 40.0};
+    std::array<unsigned char, 3> c;
+    for (int i = 0; i < 3; ++i) c[i] = static_cast<unsigned char>(base[i] * weight);
+    segments.emplace_back(l.from, l.to);
+    colours.push_back(c);
+  }
+  rays_->GetProperty()->SetLineWidth(2);  // tens of links, not hundreds of rays
+  drawLines(segments, colours);
 }
 
 void SolutionViewer::showRows(int element) {
   if (element < 0 || element >= solution_->GetNumberOfCells())
     throw InputError("element " + std::to_string(element) + " does not exist (the mesh has " +
                      std::to_string(solution_->GetNumberOfCells()) + " elements)");
+  if (options_.linksOf) {
+    const std::vector<LinkSegment> links = options_.linksOf(element);
+    int clusters = 0;
+    double strongest = 0;
+    for (const LinkSegment& l : links) {
+      clusters += l.cluster;
+      strongest = std::max(strongest, l.share);
+    }
+    setLinks(links);
+    say("element " + std::to_string(element) + ": " + std::to_string(links.size()) + " links, " +
+        std::to_string(links.size() - clusters) + " to surfaces (yellow), " +
+        std::to_string(clusters) + " to clusters (cyan); the strongest brings " +
+        std::to_string(static_cast<int>(std::lround(100 * strongest))) + "%");
+    return;
+  }
   if (!live_) {
     say("a saved solution has no form factors: open the scene to see rays");
     return;
@@ -490,7 +543,9 @@ bool SolutionViewer::handleKey(const std::string& key, int x, int y) {
   const bool noSolver =
       !live_ && (key == "space" || key == "g" || key == "b" || key == "a" || key == "l");
   if (noSolver) {
-    say("a saved solution has no solver to step: open the scene (radiosity view SCENE.obj)");
+    say(options_.linksOf
+            ? "the hierarchical solve is not stepped live: p shows an element's links"
+            : "a saved solution has no solver to step: open the scene (radiosity view SCENE.obj)");
     return true;
   }
   if (key.size() == 1 && key[0] >= '1' && key[0] <= '9') {

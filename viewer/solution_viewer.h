@@ -2,12 +2,15 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "radiosity/output/tone_map.h"
 #include "viewer/display_scalars.h"
+#include "viewer/link_segment.h"
 #include "viewer/live_solution.h"
 #include "viewer/scene_camera.h"
 
@@ -44,7 +47,8 @@ struct ViewerOptions {
   bool help = true;           // the key overlay (interactive window)
   int width = 1280, height = 720;
   std::optional<Camera> camera;  // default: frame the bounding box
-  int pickElement = -1;          // draw this element's form-factor rays from the start
+  int pickElement = -1;          // draw this element's form-factor rays (or links) from the start
+  LinksOfElement linksOf;        // a hierarchical solve's links: what picking draws; empty: none
   double tolerance = 0;          // drawn on the convergence chart
   int stopAfter = -1;            // >= 0: the live solver restarted and stepped this often
   std::string title = "radiosity";
@@ -88,6 +92,10 @@ class SolutionViewer {
   void refreshStatus();
   void refreshChart();
   void setRays(const std::vector<RaySegment>& rays);
+  void setLinks(const std::vector<LinkSegment>& links);
+  // Lines in the rays' actor, one colour each; hidden when empty.
+  void drawLines(const std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>& lines,
+                 const std::vector<std::array<unsigned char, 3>>& colours);
   void printElement(int element) const;
   void resetCamera();
   void say(const std::string& message);

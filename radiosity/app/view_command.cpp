@@ -150,6 +150,25 @@ void requireDisplay(bool screenshot) {
                              "--screenshot FILE.png under `xvfb-run -a`");
 }
 
+// An element's links as the viewer draws them, each with its share of the light they bring.
+LinksOfElement linksForViewer(std::shared_ptr<const ElementLinks> links) {
+  return [links](int element) {
+    std::vector<LinkSegment> out;
+    double total = 0;
+    for (const ElementLink& l : links->of(element)) {
+      LinkSegment s;
+      s.from = l.receiverCentroid.cast<double>();
+      s.to = l.sourceCentroid.cast<double>();
+      s.cluster = l.sourceIsCluster;
+      s.share = l.irradiance.luminance();
+      total += s.share;
+      out.push_back(s);
+    }
+    for (LinkSegment& s : out) s.share = total > 0 ? s.share / total : 0.0;
+    return out;
+  };
+}
+
 void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command,
              const std::string& solverName) {
   ViewerOptions view;
@@ -203,6 +222,7 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
 
   options.scenePath = args.input;
   finishSolveOptions(command, options, solverName);
+  options.keepLinks = options.solver == SolverKind::Hierarchical;  // what picking draws
   probes = loadViewProbes(args, args.solutionDir);  // before the solve: a bad file fails at once
   const SolveResult result =
       solveOrReuse(loadScene(options.scenePath, options.lights, options.twoSided), options,
@@ -214,10 +234,14 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
       makeSolutionPolyData(*solution.mesh, solution.radiosity, solution.unshot, toneMap);
 
   if (options.solver == SolverKind::Hierarchical) {
-    // Its links live inside the solve: the viewer shows the result without a solver to step.
-    if (args.raysOf >= 0)
-      logWarning("--rays-of: --solver hierarchical casts rays per link receiver, not per element");
+    // The viewer shows the result and, picked, an element's links; it does not step the solve.
     if (args.stopAfter >= 0) logWarning("--stop-after: the hierarchical solve is not stepped live");
+    if (solution.links) {
+      view.linksOf = linksForViewer(solution.links);
+    } else {
+      if (args.raysOf >= 0) logWarning("--rays-of: a reused saved solution has no links");
+      view.pickElement = -1;
+    }
     view.chart = false;
     show(data, toneMap, nullptr);
     return;
@@ -266,7 +290,8 @@ void registerViewCommand(CLI::App& app, CommandAction& run) {
                  "No convergence panel (and no replay of the solve); the panel shows only in "
                  "windows at least 640x240");
   view->add_flag("--no-help", args->noHelp, "Start without the key overlay");
-  view->add_option("--rays-of", args->raysOf, "Draw the form-factor rays of this element")
+  view->add_option("--rays-of", args->raysOf,
+                   "Draw the form-factor rays of this element (--solver hierarchical: its links)")
       ->check(CLI::NonNegativeNumber);
   view->add_option(
           "--stop-after", args->stopAfter,

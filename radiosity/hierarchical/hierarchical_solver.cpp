@@ -56,23 +56,25 @@ void HierarchicalSolver::normalise(int n, double factorsAbove, float foreign, fl
   normalise(node.child[1], factors, foreign, above);
 }
 
+Rgb HierarchicalSolver::linkGather(int receiver, int64_t k) const {
+  const int s = links_[k].source;
+  const HierarchyNode& source = tree_.node(s);
+  Rgb b = nodeB_[s];
+  if (source.isCluster()) {
+    const Eigen::Vector3f& at = tree_.node(receiver).centroid;
+    const Eigen::Vector3f towards = at - source.centroid;
+    const float length = towards.norm();
+    // A receiver inside the cluster's bounds sees it from every side: its area average.
+    if (length > 0 && !((at.array() >= source.boundsMin.array()).all() &&
+                        (at.array() <= source.boundsMax.array()).all()))
+      b = clusters_.towards(s, towards / length);
+  }
+  return b * static_cast<double>(links_[k].factor);
+}
+
 Rgb HierarchicalSolver::gathered(int node) const {
   Rgb sum;
-  const Eigen::Vector3f& at = tree_.node(node).centroid;
-  for (int64_t k = links_.begin(node); k < links_.end(node); ++k) {
-    const int s = links_[k].source;
-    const HierarchyNode& source = tree_.node(s);
-    Rgb b = nodeB_[s];
-    if (source.isCluster()) {
-      const Eigen::Vector3f towards = at - source.centroid;
-      const float length = towards.norm();
-      // A receiver inside the cluster's bounds sees it from every side: its area average.
-      if (length > 0 && !((at.array() >= source.boundsMin.array()).all() &&
-                          (at.array() <= source.boundsMax.array()).all()))
-        b = clusters_.towards(s, towards / length);
-    }
-    sum += b * static_cast<double>(links_[k].factor);
-  }
+  for (int64_t k = links_.begin(node); k < links_.end(node); ++k) sum += linkGather(node, k);
   return sum;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,13 @@ class HierarchicalSolver : public Solver {
   }
   // B per node (area averages over its leaves), as the oracle and the viewer read it.
   const std::vector<Rgb>& nodeRadiosity() const { return nodeB_; }
+  // What link k of `receiver` brings it from the current B, before ρ: F · the source's B, a
+  // cluster's as it shows towards the receiver (its bins). A node gathers the sum of its links'.
+  Rgb linkGather(int receiver, int64_t k) const;
+  // Element e's correction of what the receivers above its deepest receiver gathered (the class
+  // comment): B_e = E + ρ · (the deepest receiver's and its descendants' gather + this × the
+  // gather of the receivers above it).
+  float ancestorScale(int element) const { return scale_[element]; }
 
  private:
   Rgb gathered(int node) const;

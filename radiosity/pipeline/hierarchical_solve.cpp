@@ -45,6 +45,7 @@ void solveHierarchical(const SolveOptions& options, const RayCaster& rays,
     throwIfInterrupted();
   }
   solution.radiosity = hr.solver().solution();
+  if (options.keepLinks) solution.links = std::make_shared<const ElementLinks>(hr);
   reportSolver(hr.solver(), report);
   SolveReport::Hierarchy& h = report.hierarchy;
   h.nodes = tree.size();

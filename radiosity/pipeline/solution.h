@@ -8,6 +8,7 @@
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/core/rgb.h"
+#include "radiosity/hierarchical/element_links.h"
 #include "radiosity/scene/light_groups.h"
 #include "radiosity/scene/scene.h"
 #include "radiosity/solvers/radiosity_problem.h"
@@ -39,6 +40,9 @@ struct Solution {
   // With --light-groups: one layer per light group; `radiosity` and `pointRadiosity` are their
   // sums. Empty otherwise.
   std::vector<LightLayer> layers;
+  // With keepLinks and --solver hierarchical: the links each element gathers over, for the
+  // viewer. Null otherwise.
+  std::shared_ptr<const ElementLinks> links;
 };
 
 // Why the iterations stopped.

@@ -38,6 +38,7 @@ struct SolveOptions {
   int maxIterations = 0;         // 0: a default per solver
   int bounces = -1;              // Jacobi only: exactly this many bounces (overrides tolerance)
   bool keepBounceTerms = false;  // Jacobi only: keep each iteration's term (rho F)^k E
+  bool keepLinks = false;  // hierarchical only: keep the links in Solution::links (the viewer)
   FormFactorMethod formFactors = FormFactorMethod::Hemisphere;
   double patchArea = 0;        // analytic: largest shooting patch (scene units²); 0: 8 × max area
   int shadowRays = 16;         // analytic: visibility rays per receiver point and patch

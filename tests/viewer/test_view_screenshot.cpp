@@ -243,6 +243,38 @@ TEST(ViewScreenshot, SteppedSolverBrightensTowardsTheSolution) {
   fs::remove_all(dir);
 }
 
+// A hierarchical solve: --rays-of draws the element's links, yellow to surfaces and cyan to
+// clusters (dimmed by the light each brings), and the log counts them. The same view without it
+// (the same solve: deterministic) differs only where lines are drawn, and there in their colours.
+TEST(ViewScreenshot, HierarchicalSolveDrawsAPickedElementsLinks) {
+  if (!haveXvfb())
+    GTEST_SKIP() << "xvfb-run is not installed: cannot render off-screen with Debian's VTK";
+  const fs::path dir = cornellWithCamera("view_links");
+  const std::string common = (dir / "cornell_box.obj").string() +
+                             " --solver hierarchical --elements 300 --rays 64 --camera-from-scene"
+                             " --no-help --size 320x240 --screenshot ";
+  std::string errors;
+  const fs::path plain = dir / "plain.png", links = dir / "links.png";
+  ASSERT_EQ(runView(common + plain.string(), errors), 0) << errors;
+  // Element 0 is on the floor: its links reach up to the ceiling's lamp and the walls.
+  ASSERT_EQ(runView(common + links.string() + " --rays-of 0", errors), 0) << errors;
+  EXPECT_NE(errors.find("element 0: "), std::string::npos) << errors;
+  EXPECT_NE(errors.find(" links, "), std::string::npos) << errors;
+  const Image a = readPng(plain), b = readPng(links);
+  ASSERT_EQ(a.rgb.size(), b.rgb.size());
+  int changed = 0, lineColoured = 0;
+  for (size_t k = 0; k < a.rgb.size(); ++k) {
+    const auto &p = a.rgb[k], &q = b.rgb[k];
+    if (std::abs(p[0] - q[0]) + std::abs(p[1] - q[1]) + std::abs(p[2] - q[2]) < 30) continue;
+    ++changed;
+    // Yellow: blue the smallest by far; cyan: red the smallest by far.
+    lineColoured += (q[2] < q[0] / 2 && q[2] < q[1] / 2) || (q[0] < q[1] / 2 && q[0] < q[2] / 2);
+  }
+  EXPECT_GT(changed, 200) << "no links drawn";
+  EXPECT_GT(lineColoured, changed * 3 / 4) << "what changed is not the links' colours";
+  fs::remove_all(dir);
+}
+
 // The files on which VTK 9.1's XML reader crashed (fuzzer findings, kept in the corpus): `view`
 // refuses each with exit code 1 naming the file and line, instead of dying with SIGSEGV.
 TEST(ViewScreenshot, FilesThatCrashedVtksReaderAreRefused) {
