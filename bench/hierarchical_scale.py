@@ -3,14 +3,19 @@
 generated room (bench/scene_generator.py) at each element count with --solver hierarchical,
 gauss-seidel and progressive, one after the other at each size (so the machine's load affects
 all three alike), and records the whole-process wall time and peak resident memory
-(/usr/bin/time), the links and bytes per element of the hierarchy (summary.json), and the relative
+(/usr/bin/time), the links and bytes per element of the hierarchy (summary.json), the relative
 RMS difference of each solution from Gauss–Seidel's on the same elements (area-weighted, over the
-three channels). Fits time and memory = c · N^k per solver and writes CSV, JSON and one PNG
-(time and memory against elements, all solvers).
+three channels), and each solution's error against a reference no solver took part in: the
+per-element radiosity of a random sample of the elements, path traced (bench/element_reference,
+made once per size and cached in --out/reference_cache, which git ignores). That error is the relative RMS over the
+sampled elements with the reference's own variance (its standard errors squared) taken out.
+Fits time and memory = c · N^k per solver and writes CSV, JSON and one PNG (time and memory
+against elements, all solvers).
 
     /usr/bin/python3 bench/hierarchical_scale.py [--build build] [--out bench/results]
         [--sizes 10000,30000,100000] [--rays 256] [--threads 0] [--boxes 64]
-        [--row-solvers-up-to 300000]
+        [--row-solvers-up-to 300000] [--reference-sample 2000] [--reference-paths 16384]
+        [--no-reference]
 
 The row solvers keep one form-factor row per element (about 9 KB each at 1024 rays): above
 --row-solvers-up-to elements only the hierarchical solve runs.
@@ -46,6 +51,35 @@ def relative_rms(rows, reference):
             num += a[0] * (a[c] - b[c]) ** 2
             den += a[0] * b[c] ** 2
     return math.sqrt(num / den) if den > 0 else float("nan")
+
+
+def read_reference(path):
+    """{element: (cx, cy, cz, B_r, B_g, B_b, se_r, se_g, se_b)} from bench/element_reference."""
+    with open(path) as f:
+        return {int(r["element"]): tuple(float(r[k]) for k in
+                                         ("cx", "cy", "cz", "B_r", "B_g", "B_b", "se_r", "se_g", "se_b"))
+                for r in csv.DictReader(f)}
+
+
+def read_centroids(path):
+    with open(path) as f:
+        return [(float(r["cx"]), float(r["cy"]), float(r["cz"])) for r in csv.DictReader(f)]
+
+
+def error_against_reference(rows, centroids, reference):
+    """Relative RMS of B over the reference's elements (area-weighted, three channels), with the
+    reference's own variance removed: E[(B − B_ref)²] = (B − B_true)² + se². Checks that both sides
+    hold the same elements (centroids within 1e-6)."""
+    num = den = noise = 0.0
+    for e, ref in reference.items():
+        if max(abs(a - b) for a, b in zip(centroids[e], ref[:3])) > 1e-6:
+            sys.exit(f"hierarchical_scale: element {e} of the solve is not the reference's")
+        area = rows[e][0]
+        for c in range(3):
+            num += area * (rows[e][c + 1] - ref[3 + c]) ** 2
+            noise += area * ref[6 + c] ** 2
+            den += area * ref[3 + c] ** 2
+    return math.sqrt(max(0.0, num - noise) / den), math.sqrt(noise / den)
 
 
 def plot_png(path, rows, fits, title):
@@ -86,6 +120,9 @@ def main():
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--boxes", type=int, default=64)
     parser.add_argument("--row-solvers-up-to", type=int, default=300000)
+    parser.add_argument("--reference-sample", type=int, default=2000)
+    parser.add_argument("--reference-paths", type=int, default=16384)
+    parser.add_argument("--no-reference", action="store_true")
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     binary = os.path.join(args.build, "bin/radiosity")
@@ -94,8 +131,20 @@ def main():
         scene = os.path.join(tmp, "room.obj")
         subprocess.run([sys.executable, os.path.join(ROOT, "bench/scene_generator.py"), scene, "--boxes",
                         str(args.boxes)], check=True)
+        cache = os.path.join(args.out, "reference_cache")
+        os.makedirs(cache, exist_ok=True)
         for n in [int(s) for s in args.sizes.split(",")]:
             solutions = {}
+            reference = None
+            if not args.no_reference:
+                ref_path = os.path.join(cache, "room%d_%d_sample%d_paths%d.csv"
+                                        % (args.boxes, n, args.reference_sample, args.reference_paths))
+                if not os.path.exists(ref_path):
+                    subprocess.run([os.path.join(args.build, "bin/element_reference"), scene, "--elements",
+                                    str(n), "--sample", str(args.reference_sample), "--paths",
+                                    str(args.reference_paths), "--threads", str(args.threads), "--out",
+                                    ref_path], check=True)
+                reference = read_reference(ref_path)
             for solver in SOLVERS:
                 if solver != "hierarchical" and n > args.row_solvers_up_to:
                     continue
@@ -110,13 +159,18 @@ def main():
                 s = json.load(open(os.path.join(out, "summary.json")))
                 h = s.get("hierarchy") or {}
                 solutions[solver] = read_radiosity(os.path.join(out, "elements.csv"))
+                error = reference_noise = ""
+                if reference is not None:
+                    error, reference_noise = error_against_reference(
+                        solutions[solver], read_centroids(os.path.join(out, "elements.csv")), reference)
                 rows.append({"solver": solver, "target_elements": n, "elements": s["scene"]["elements"],
                              "wall_s": float(wall), "peak_mib": int(peak_kib) / 1024,
                              "form_factor_s": s["time_seconds"]["form_factors"],
                              "solve_s": s["time_seconds"]["solve"], "rays": s["form_factors"]["rays_cast"],
                              "links": h.get("links", ""), "bytes_per_element": h.get("bytes_per_element", ""),
                              "threads": s["threads"], "rays_per_element": args.rays,
-                             "relative_rms_vs_gauss_seidel": ""})
+                             "relative_rms_vs_gauss_seidel": "", "relative_rms_vs_reference": error,
+                             "reference_noise": reference_noise})
                 print(rows[-1], flush=True)
             if "gauss-seidel" in solutions:
                 for r in rows:
