@@ -12,6 +12,7 @@
 #include "radiosity/core/log.h"
 #include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/direct_light_stage.h"
+#include "radiosity/pipeline/emitter_first_shot.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/hierarchical_solve.h"
 #include "radiosity/pipeline/iteration.h"
@@ -157,20 +158,36 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
   } else {
     DirectLightStage directLight(solution.scene, *solution.mesh, rays, options, &exposure);
+    EmitterFirstShot emitterShot(*solution.mesh, rays, exposure, options.seed,
+                                 options.raysPerElement);
+    double emitterSeconds = 0;
     std::shared_ptr<KeptFactors> kept;
     std::vector<int> rayMultipliers;  // empty: from the problem's emission
     if (options.keepFactors) {
       kept = keepLightsApart(solution, rays, options, exposure, meshed.sizing.edge, rayMultipliers,
                              report);
     } else {
+      if (options.solver == SolverKind::Hierarchical) {
+        // Its links would gather a small lamp's light by chance: the emitters' direct light by
+        // shadow rays instead, and the links carry the reflected light (emitter_first_shot.h).
+        t = Clock::now();
+        emitterShot.apply(solution.problem);
+        emitterSeconds = secondsSince(t);  // form-factor time, added after the solve's is known
+        report.raysCast += emitterShot.raysCast();
+        if (emitterShot.active())
+          logInfo("emitters' direct light: " + std::to_string(emitterShot.emitters()) +
+                  " emitting elements, " + std::to_string(emitterShot.raysCast()) + " shadow rays");
+      }
       directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
     }
     noteBlackElements(solution, report);
     if (options.solver == SolverKind::Hierarchical) {
       t = Clock::now();
       solveHierarchical(options, rays, exposure, limits, solution, report);
+      emitterShot.restore(solution.problem, solution.radiosity);
       directLight.report(report);
       report.times.solve = std::max(0.0, secondsSince(t) - report.times.formFactors);
+      report.times.formFactors += emitterSeconds;
       warnIfNotConverged(limits, solution, report);
       report.times.total = secondsSince(start);
       return result;

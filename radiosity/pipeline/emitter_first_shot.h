@@ -1,0 +1,65 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "meshing/patch_mesh.h"
+#include "radiosity/core/rgb.h"
+#include "radiosity/core/rng.h"
+#include "radiosity/solvers/radiosity_problem.h"
+#include "radiosity/visibility/element_exposure.h"
+#include "radiosity/visibility/ray_caster.h"
+
+namespace rad {
+
+// The emissive polygons' direct light, by shadow rays to points on them, for a gathering solve
+// whose own rays would find a small bright emitter by chance: gathering each element's light
+// through 256 hemisphere rays left a room lit by its ceiling's lamp 11-17% from a path-traced
+// reference per element (bench/hierarchical_scale.py), nearly all of it the lamp's direct light.
+//
+// The system is solved for the reflected radiosity R = B − E instead of B: with D_e the direct
+// irradiance from the emitters (Σ_j F_ej E_j), R_e = ρ_e D_e + ρ_e Σ_j F_ej R_j, a radiosity
+// system of the same ρ and F whose emission is ρD; then B = R + E. apply() makes that problem
+// from the emissive polygons' E alone (before the lights' first shot, DirectLightStage, adds to
+// it); restore() puts E back.
+//
+// D_e is the mean over kAreaStrata² points stratified over the element's exposed area; each point
+// sends `raysPerPoint` shadow rays to points on the emitters, an emitting element picked in
+// proportion to its power A·luminance(E) and a point uniformly on it (one-sided: only the front of
+// an emitter emits, only the front of a receiver receives).
+class EmitterFirstShot {
+ public:
+  // Holds references to all four, which must outlive it. `raysPerElement`: shadow rays per element
+  // in all, spread over its points.
+  EmitterFirstShot(const PatchMesh& mesh, const RayCaster& rays, const ElementExposure& exposure,
+                   uint64_t seed, int raysPerElement);
+
+  // problem.emission (E = π Ke, makeProblem's) becomes ρ D. No emissive polygon: nothing changes.
+  void apply(RadiosityProblem& problem);
+  // The emission E + whatever was added since apply() (the lights' first shot), and B = R + E for
+  // the solution the solver gave over R.
+  void restore(RadiosityProblem& problem, std::vector<Rgb>& radiosity) const;
+
+  bool active() const { return !emitters_.empty(); }
+  int emitters() const { return static_cast<int>(emitters_.size()); }
+  uint64_t raysCast() const { return raysCast_; }
+  const std::vector<Rgb>& irradiance() const { return irradiance_; }  // D per element
+
+ private:
+  Rgb directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& n, Rng& rng,
+               const std::vector<Rgb>& emission) const;
+
+  const PatchMesh& mesh_;
+  const RayCaster& rays_;
+  const ElementExposure& exposure_;
+  uint64_t seed_;
+  int raysPerPoint_;
+  std::vector<int> emitters_;        // emitting elements
+  std::vector<double> cumulative_;   // their powers, summed, normalised to end at 1
+  std::vector<double> probability_;  // each one's share of the power
+  std::vector<Rgb> emission_;        // E, the problem's emission before apply()
+  std::vector<Rgb> irradiance_;
+  uint64_t raysCast_ = 0;
+};
+
+}  // namespace rad
