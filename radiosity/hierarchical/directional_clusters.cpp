@@ -59,12 +59,24 @@ void DirectionalClusters::addChange(int patchRoot, const Rgb& change) {
 
 Rgb DirectionalClusters::towards(int cluster, const Eigen::Vector3f& direction) const {
   const std::array<Rgb, 6>& bins = bins_[slot_[cluster]];
-  Rgb b;
+  const std::array<float, 6>& weight = weight_[slot_[cluster]];
+  Rgb power;
+  double shown = 0;
   for (int axis = 0; axis < 3; ++axis) {
     const float c = direction[axis];
-    b += bins[2 * axis + (c < 0 ? 1 : 0)] * static_cast<double>(c * c);
+    const int k = 2 * axis + (c < 0 ? 1 : 0);
+    const double w = static_cast<double>(c * c) * weight[k];
+    power += bins[k] * w;
+    shown += w;
   }
-  return b;
+  if (shown > 0) return power / shown;
+  // Nothing in the cluster faces the receiver's way: its rays that hit it saw its surfaces
+  // edge-on; their average is the best guess.
+  for (int k = 0; k < 6; ++k) {
+    power += bins[k] * static_cast<double>(weight[k]);
+    shown += weight[k];
+  }
+  return shown > 0 ? power / shown : Rgb();
 }
 
 }  // namespace rad

@@ -16,8 +16,10 @@ namespace rad {
 // cluster keeps six bins, along ±x, ±y and ±z: bin k holds Σ A_i max(0, n_i·d_k) B_i over its
 // surfaces, divided by Σ A_i max(0, n_i·d_k), the B of the surfaces facing d_k weighted by how
 // squarely they face it. A link reads the bins towards its receiver blended by the squared
-// components of the direction (an ambient cube), so what faces away from the receiver counts for
-// nothing.
+// components c_k² of the direction, each weighted by its bin's facing area too:
+// Σ c_k² W_k B_k / Σ c_k² W_k, the projected-area average of what faces the receiver. So what
+// faces away counts for nothing, and a bin no surface faces counts for nothing either (blending
+// the bins' B alone read an empty bin as black: a generated room of boxes 1.5% dark).
 class DirectionalClusters {
  public:
   explicit DirectionalClusters(const NodeHierarchy& tree);

@@ -21,20 +21,30 @@ namespace rad {
 // irradiance from the emitters (Σ_j F_ej E_j), R_e = ρ_e D_e + ρ_e Σ_j F_ej R_j, a radiosity
 // system of the same ρ and F whose emission is ρD; then B = R + E. apply() makes that problem
 // from the emissive polygons' E alone (before the lights' first shot, DirectLightStage, adds to
-// it); restore() puts E back.
+// it); restore() puts E back. Emitting patches larger than 5% of the scene's area
+// (kLargeEmitterShare: a glowing wall, a sky dome) stay in the emission, and so do all emitters
+// when the small ones together exceed that share: the links' hemisphere rays find them well, and
+// light sampling by power would rarely pick the elements beside a receiver (a furnace room whose
+// every surface emits: the median element 4.5% dark, some 8 times too bright).
 //
 // D_e is the mean over kAreaStrata² points stratified over the element's exposed area; each point
-// sends `raysPerPoint` shadow rays to points on the emitters, an emitting element picked in
-// proportion to its power A·luminance(E) and a point uniformly on it (one-sided: only the front of
+// sends `raysPerPoint` samples, an emitting element picked in proportion to its power
+// A·luminance(E): its unoccluded point-to-triangle factor in closed form (bounded however near),
+// times the visibility of a point uniformly on it by a shadow ray (one-sided: only the front of
 // an emitter emits, only the front of a receiver receives).
 class EmitterFirstShot {
  public:
   // Holds references to all four, which must outlive it. `raysPerElement`: shadow rays per element
   // in all, spread over its points.
+  // `largeEmitterShare`: emitting patches above this share of the scene's area, or all when the
+  // rest together exceed it, are left to the solve (1: shoot every emitter).
+  static constexpr double kLargeEmitterShare = 0.05;
   EmitterFirstShot(const PatchMesh& mesh, const RayCaster& rays, const ElementExposure& exposure,
-                   uint64_t seed, int raysPerElement);
+                   uint64_t seed, int raysPerElement,
+                   double largeEmitterShare = kLargeEmitterShare);
 
-  // problem.emission (E = π Ke, makeProblem's) becomes ρ D. No emissive polygon: nothing changes.
+  // Each small emitter's E (π Ke, makeProblem's) leaves problem.emission, and ρ D joins every
+  // element's. No small emissive polygon: nothing changes.
   void apply(RadiosityProblem& problem);
   // The emission E + whatever was added since apply() (the lights' first shot), and B = R + E for
   // the solution the solver gave over R.
@@ -54,10 +64,11 @@ class EmitterFirstShot {
   const ElementExposure& exposure_;
   uint64_t seed_;
   int raysPerPoint_;
+  double largeEmitterShare_;
   std::vector<int> emitters_;        // emitting elements
   std::vector<double> cumulative_;   // their powers, summed, normalised to end at 1
   std::vector<double> probability_;  // each one's share of the power
-  std::vector<Rgb> emission_;        // E, the problem's emission before apply()
+  std::vector<Rgb> emission_;        // E of the emitters shot here, 0 elsewhere
   std::vector<Rgb> irradiance_;
   uint64_t raysCast_ = 0;
 };

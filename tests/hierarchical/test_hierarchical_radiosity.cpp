@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
 
 #include "radiosity/formfactors/form_factor_cache.h"
 #include "radiosity/hierarchical/hierarchical_radiosity.h"
@@ -86,6 +88,57 @@ TEST(HierarchicalRadiosity, FurnaceGivesEOverOneMinusRhoAtEveryElement) {
         worst = std::max(worst, std::fabs(hr.solver().solution()[k][c] / (e[c] / (1 - rho)) - 1));
     EXPECT_LT(worst, 1e-4) << "rho " << rho;
   }
+}
+
+// The closed cube with 16 boxes floating inside it, their faces looking out: every ray still
+// meets a front face, so B = E/(1 − ρ) everywhere, but now the clusters hold faces of a few
+// orientations and are seen from outside their bounds, where a receiver reads them by direction
+// (DirectionalClusters). Blending the six bins' averages by the direction's squared components
+// counted an empty bin as black: the worst element 1.5% dark, measured (and a generated room of
+// 64 boxes 1.5% dark overall against a path-traced reference); weighting the bins' averages by
+// how much of each faces that way is exact here (1e-6).
+TEST(HierarchicalRadiosity, FurnaceWithBoxesInsideGivesEOverOneMinusRho) {
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                    {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  std::vector<PatchPolygon> polygons = {{{0, 1, 2, 3}, 0}, {{4, 7, 6, 5}, 0}, {{0, 4, 5, 1}, 0},
+                                        {{3, 2, 6, 7}, 0}, {{0, 3, 7, 4}, 0}, {{1, 5, 6, 2}, 0}};
+  // A box [lo, hi]³ whose faces look outward: the cube's faces, wound the other way.
+  auto addBox = [&](const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+    const int b = static_cast<int>(p.size());
+    for (int k = 0; k < 8; ++k)
+      p.push_back({(k == 1 || k == 2 || k == 5 || k == 6) ? hi.x() : lo.x(),
+                   (k == 2 || k == 3 || k == 6 || k == 7) ? hi.y() : lo.y(),
+                   k >= 4 ? hi.z() : lo.z()});
+    for (const auto& f : {std::array<int, 4>{0, 3, 2, 1},
+                          {4, 5, 6, 7},
+                          {0, 1, 5, 4},
+                          {3, 7, 6, 2},
+                          {0, 4, 7, 3},
+                          {1, 2, 6, 5}})
+      polygons.push_back({{b + f[0], b + f[1], b + f[2], b + f[3]}, 0});
+  };
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const Eigen::Vector3d lo(0.08 + 0.23 * i, 0.08 + 0.23 * j, 0.05 + 0.1 * ((i + j) % 3));
+      addBox(lo, lo + Eigen::Vector3d(0.12, 0.12, 0.15 + 0.05 * (i % 2)));
+    }
+  PatchMesh mesh(p, polygons);
+  mesh.subdivideUniform(0.004);
+  const RayCaster rays(mesh);
+  const double rho = 0.5;
+  const Rgb e(1.0, 2.0, 0.5);
+  const RadiosityProblem problem = uniformProblem(mesh, rho, e);
+  HierarchicalOptions options;
+  options.raysPerReceiver = 256;
+  HierarchicalRadiosity hr(mesh, rays, problem, options);
+  solveToConvergence(hr, 1e-6 * (1 - rho));
+  double worst = 0;
+  for (int k = 0; k < mesh.elementCount(); ++k)
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::fabs(hr.solver().solution()[k][c] / (e[c] / (1 - rho)) - 1));
+  std::printf("worst element %.2e from E/(1 - rho), %lld links\n", worst,
+              static_cast<long long>(hr.links().size()));
+  EXPECT_LT(worst, 1e-3);
 }
 
 // Every leaf's chain of links (its own and its ancestors') holds each source leaf at most once:
