@@ -21,8 +21,6 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -32,6 +30,7 @@
 
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/core/progress.h"
 #include "radiosity/core/rng.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/pipeline/mesh_stage.h"
@@ -120,17 +119,13 @@ int run(const Args& args) {
   const RenderScene view(scene, mesh, caster);
   const PathTracer tracer(view);
   std::vector<Estimate> estimates(sampled.size());
-  const auto start = std::chrono::steady_clock::now();
-  std::atomic<int> done{0};
+  Progress progress("element_reference", sampled.size(), "elements");
   tbb::parallel_for(0, static_cast<int>(sampled.size()), [&](int i) {
     estimates[i] = elementIrradiance(view, tracer, sampled[i], args.paths, args.seed);
-    const int d = ++done;
-    if (d % 200 == 0) std::fprintf(stderr, "\relement_reference: %d/%zu", d, sampled.size());
+    progress.advance();
   });
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::fprintf(stderr, "\relement_reference: %zu elements of %d, %d paths each, %.1f s\n",
-               sampled.size(), mesh.elementCount(), args.paths, seconds);
+  progress.finish("of " + std::to_string(mesh.elementCount()) + ", " +
+                  std::to_string(args.paths) + " paths each");
 
   AtomicFile file(args.out);
   std::ostream& f = file.stream();
