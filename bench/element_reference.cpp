@@ -124,8 +124,8 @@ int run(const Args& args) {
     estimates[i] = elementIrradiance(view, tracer, sampled[i], args.paths, args.seed);
     progress.advance();
   });
-  progress.finish("of " + std::to_string(mesh.elementCount()) + ", " +
-                  std::to_string(args.paths) + " paths each");
+  progress.finish("of " + std::to_string(mesh.elementCount()) + ", " + std::to_string(args.paths) +
+                  " paths each");
 
   AtomicFile file(args.out);
   std::ostream& f = file.stream();
