@@ -207,24 +207,18 @@ void DirectLightStage::compute(int e) {
   // made the indirectly lit parts 5-15% too dark at the default element size (docs/physics.md).
   Rng jitter(streamKey(seed_ ^ 0x617265616d65616eull, static_cast<uint64_t>(e)));
   Rgb areaSum;
-  int used = 0;
-  for (int j = 0; j < kAreaStrata * kAreaStrata; ++j) {
-    const double s = (j % kAreaStrata + jitter.uniform()) / kAreaStrata;
-    const double t = (j / kAreaStrata + jitter.uniform()) / kAreaStrata;
-    if (partlyBuried && exposure_->buried(e, s, t)) continue;
-    const double r = std::sqrt(s);
-    const Eigen::Vector3d x = (1 - r) * corners[0] + r * (1 - t) * corners[1] + r * t * corners[2];
-    for (size_t l : lights_) {
-      if (samplePointLights_ && isPointLike(scene_.lights[l])) continue;
-      areaSum += directIrradiance(
-          scene_.lights[l], rays_, x, n,
-          streamKey(seed_ ^ 0x617265616d65616eull, static_cast<uint64_t>(e), 1 + l * 64 + j), cast,
-          kAreaRays);
-    }
-    if (samplePointLights_)
-      areaSum += sampledPointLightIrradiance(pointLights_, rays_, x, n, jitter.uniform(), cast);
-    ++used;
-  }
+  const int used =
+      forEachExposedStratum(mesh_, exposure_, e, jitter, [&](const Eigen::Vector3d& x, int j) {
+        for (size_t l : lights_) {
+          if (samplePointLights_ && isPointLike(scene_.lights[l])) continue;
+          areaSum += directIrradiance(
+              scene_.lights[l], rays_, x, n,
+              streamKey(seed_ ^ 0x617265616d65616eull, static_cast<uint64_t>(e), 1 + l * 64 + j),
+              cast, kAreaRays);
+        }
+        if (samplePointLights_)
+          areaSum += sampledPointLightIrradiance(pointLights_, rays_, x, n, jitter.uniform(), cast);
+      });
   irradiance_[e] = areaSum / std::max(used, 1);
   elementRays_[e] = cast;
   if (!keepPoints_ && used > 0) return;

@@ -8,6 +8,7 @@
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/core/rgb.h"
+#include "radiosity/pipeline/exposed_strata.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_options.h"
 #include "radiosity/scene/scene.h"
@@ -23,10 +24,9 @@ struct DirectRays {
   int skyStrata = 8;  // even: a map's rays are skyStrata × skyStrata / 2, twice
   int sunStrata = 4;
 };
-// An element's mean E_d: kAreaStrata² points stratified over its area, each with kAreaRays
-// (4 × 4 sky rays, 2 × 2 over the sun): 256 sky rays per element in all, as many directions as
-// the three receiver points had, now spread over the whole element.
-constexpr int kAreaStrata = 4;
+// An element's mean E_d: kAreaStrata² points stratified over its area (exposed_strata.h), each
+// with kAreaRays (4 × 4 sky rays, 2 × 2 over the sun): 256 sky rays per element in all, as many
+// directions as the three receiver points had, now spread over the whole element.
 constexpr DirectRays kAreaRays{4, 2};
 // Up to this many point and spot lights, every one gets a shadow ray from each area point; with
 // more, each point casts one, to a light picked in proportion to its unshadowed irradiance there

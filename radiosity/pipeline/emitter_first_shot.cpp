@@ -7,9 +7,8 @@
 #include <cmath>
 
 #include "radiosity/core/check.h"
-#include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/point_to_polygon.h"
-#include "radiosity/pipeline/direct_light_stage.h"
+#include "radiosity/pipeline/exposed_strata.h"
 
 namespace rad {
 
@@ -66,19 +65,12 @@ void EmitterFirstShot::apply(RadiosityProblem& problem) {
                       for (int e = range.begin(); e < range.end(); ++e) {
                         if (problem.reflectance[e].maxComponent() <= 0) continue;
                         const Eigen::Vector3d n = mesh_.normal(e);
-                        const auto corners = mesh_.corners(e);
-                        const bool partlyBuried = exposure_.buriedCells(e) != 0;
                         Rng rng(streamKey(seed_ ^ 0x656d6974746572ull, static_cast<uint64_t>(e)));
                         Rgb sum;
-                        int used = 0;
-                        for (int j = 0; j < kAreaStrata * kAreaStrata; ++j) {
-                          const double s = (j % kAreaStrata + rng.uniform()) / kAreaStrata;
-                          const double t = (j / kAreaStrata + rng.uniform()) / kAreaStrata;
-                          if (partlyBuried && exposure_.buried(e, s, t)) continue;
-                          sum += directAt(uniformPointOnTriangle(corners, s, t), n, rng, emission_);
-                          local += raysPerPoint_;
-                          ++used;
-                        }
+                        const int used = forEachExposedStratum(
+                            mesh_, &exposure_, e, rng,
+                            [&](const Eigen::Vector3d& x, int) { sum += directAt(x, n, rng); });
+                        local += static_cast<uint64_t>(used) * raysPerPoint_;
                         irradiance_[e] = used > 0 ? sum / used : Rgb();
                       }
                       cast += local;
@@ -88,8 +80,7 @@ void EmitterFirstShot::apply(RadiosityProblem& problem) {
     problem.emission[e] += problem.reflectance[e] * irradiance_[e] - emission_[e];
 }
 
-Rgb EmitterFirstShot::directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& n, Rng& rng,
-                               const std::vector<Rgb>& emission) const {
+Rgb EmitterFirstShot::directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& n, Rng& rng) const {
   Rgb sum;
   std::vector<Eigen::Vector3d> triangle(3);
   for (int k = 0; k < raysPerPoint_; ++k) {
@@ -122,7 +113,7 @@ Rgb EmitterFirstShot::directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& 
       const Eigen::Vector3d along = to - from;
       const double length = along.norm();
       if (!(length > 0 && rays_.occluded(from, along / length, length)))
-        sum += emission[j] * (factor / probability_[pick]);
+        sum += emission_[j] * (factor / probability_[pick]);
       break;
     }
   }

@@ -25,7 +25,7 @@ namespace rad {
 // (kLargeEmitterShare: a glowing wall, a sky dome) stay in the emission, and so do all emitters
 // when the small ones together exceed that share: the links' hemisphere rays find them well, and
 // light sampling by power would rarely pick the elements beside a receiver (a furnace room whose
-// every surface emits: the median element 4.5% dark, some 8 times too bright).
+// every surface emits: the median element 4.5% dark, some 4 times too bright).
 //
 // D_e is the mean over kAreaStrata² points stratified over the element's exposed area; each point
 // sends `raysPerPoint` samples, an emitting element picked in proportion to its power
@@ -56,8 +56,8 @@ class EmitterFirstShot {
   const std::vector<Rgb>& irradiance() const { return irradiance_; }  // D per element
 
  private:
-  Rgb directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& n, Rng& rng,
-               const std::vector<Rgb>& emission) const;
+  // D at point x of normal n, from raysPerPoint_ samples.
+  Rgb directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& n, Rng& rng) const;
 
   const PatchMesh& mesh_;
   const RayCaster& rays_;

@@ -176,7 +176,8 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
         report.raysCast += emitterShot.raysCast();
         if (emitterShot.active())
           logInfo("emitters' direct light: " + std::to_string(emitterShot.emitters()) +
-                  " emitting elements, " + std::to_string(emitterShot.raysCast()) + " shadow rays");
+                  " emitting elements, " + std::to_string(emitterShot.raysCast()) +
+                  " shadow rays, " + formatNumber(emitterSeconds) + " s");
       }
       directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
     }

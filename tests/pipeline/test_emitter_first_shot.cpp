@@ -134,18 +134,23 @@ TEST(EmitterFirstShot, ABlockersUmbraGetsNoDirectLight) {
   EXPECT_GT(lit, 20);
 }
 
+// A unit floor facing up (+y, material 0) and an emitting unit wall at x = 0 on its edge, facing
+// +x towards it (material 1, the lamp's).
+PatchMesh wallOnTheFloorsEdge(double maxArea) {
+  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1},
+                                    {0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}};
+  PatchMesh mesh(p, {{{0, 3, 2, 1}, 0}, {{4, 5, 6, 7}, 1}});
+  mesh.subdivideUniform(maxArea);
+  return mesh;
+}
+
 // An emitting wall standing on the floor's edge (perpendicular squares sharing an edge): the
 // floor's power received, Σ A·D, is E·A·F with F from the closed form. Measured at 256 rays:
 // 0.985 (the wall's elements are picked by power, so the few beside a floor element, which bring
 // most of its light, are picked rarely and the sum is skewed low); sampling a point of the wall
 // for E·A·cos·cos/(πr²), unbounded beside it, gave 0.926.
 TEST(EmitterFirstShot, AnEmittingWallBesideTheFloorGivesItsClosedFormPower) {
-  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1},
-                                    {0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}};
-  // The floor faces up (+y); the wall at x = 0 faces +x, towards the floor.
-  std::vector<PatchPolygon> polygons = {{{0, 3, 2, 1}, 0}, {{4, 5, 6, 7}, 1}};
-  PatchMesh mesh(p, polygons);
-  mesh.subdivideUniform(0.01);
+  const PatchMesh mesh = wallOnTheFloorsEdge(0.01);
   ASSERT_GT(mesh.normal(mesh.elementCount() - 1).x(), 0.99);
   RadiosityProblem problem = problemOf(mesh);
   const RayCaster rays(mesh);
@@ -167,11 +172,7 @@ TEST(EmitterFirstShot, AnEmittingWallBesideTheFloorGivesItsClosedFormPower) {
 // With the default share, the wall (half the scene's area) stays in the emission for the links
 // to gather: nothing is shot, and the problem is unchanged.
 TEST(EmitterFirstShot, LeavesALargeEmitterToTheSolve) {
-  std::vector<Eigen::Vector3d> p = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1},
-                                    {0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}};
-  std::vector<PatchPolygon> polygons = {{{0, 3, 2, 1}, 0}, {{4, 5, 6, 7}, 1}};
-  PatchMesh mesh(p, polygons);
-  mesh.subdivideUniform(0.05);
+  const PatchMesh mesh = wallOnTheFloorsEdge(0.05);
   RadiosityProblem problem = problemOf(mesh);
   const std::vector<Rgb> before = problem.emission;
   const RayCaster rays(mesh);
