@@ -122,12 +122,12 @@ int64_t HierarchicalRadiosity::refineLinks() {
   auto next = std::make_unique<LinkSet>(tree_, std::move(kept));
 
   // The receivers whose links did not change keep them in the same order, and casting them again
-  // would give the same rays: their factors are copied over.
+  // would give the same rays: their links are copied over.
   for (int r : receivers) {
     if (touched[r]) continue;
     RAD_CHECK(next->end(r) - next->begin(r) == links.end(r) - links.begin(r));
     for (int64_t l = links.begin(r), m = next->begin(r); l < links.end(r); ++l, ++m)
-      (*next)[m].factor = links[l].factor;
+      (*next)[m] = links[l];
     next->setAboveFraction(r, links.aboveFraction(r));
   }
   raysCast_ += factors_.compute(*next, changed);

@@ -56,20 +56,33 @@ void HierarchicalSolver::normalise(int n, double factorsAbove, float foreign, fl
   normalise(node.child[1], factors, foreign, above);
 }
 
-Rgb HierarchicalSolver::linkGather(int receiver, int64_t k) const {
-  const int s = links_[k].source;
+Rgb HierarchicalSolver::radianceSeen(int receiver, int s) const {
   const HierarchyNode& source = tree_.node(s);
-  Rgb b = nodeB_[s];
-  if (source.isCluster()) {
-    const Eigen::Vector3f& at = tree_.node(receiver).centroid;
-    const Eigen::Vector3f towards = at - source.centroid;
-    const float length = towards.norm();
-    // A receiver inside the cluster's bounds sees it from every side: its area average.
-    if (length > 0 && !((at.array() >= source.boundsMin.array()).all() &&
-                        (at.array() <= source.boundsMax.array()).all()))
-      b = clusters_.towards(s, towards / length);
+  if (!source.isCluster()) return nodeB_[s];
+  const Eigen::Vector3f& at = tree_.node(receiver).centroid;
+  const Eigen::Vector3f towards = at - source.centroid;
+  const float length = towards.norm();
+  // A receiver inside the cluster's bounds sees it from every side: its area average.
+  if (length > 0 && !((at.array() >= source.boundsMin.array()).all() &&
+                      (at.array() <= source.boundsMax.array()).all()))
+    return clusters_.towards(s, towards / length);
+  return nodeB_[s];
+}
+
+Rgb HierarchicalSolver::linkGather(int receiver, int64_t k) const {
+  const Link& link = links_[k];
+  if (link.factor <= 0) return Rgb();
+  if (tree_.node(link.source).isLeaf())
+    return nodeB_[link.source] * static_cast<double>(link.factor);
+  // The source's parts weighted by the link's hits in each (Link::seen).
+  Rgb sum;
+  int weight = 0;
+  for (int part = 0; part < Link::kSeenParts; ++part) {
+    if (link.seen[part] == 0) continue;
+    sum += radianceSeen(receiver, seenPartNode(tree_, link.source, part)) * link.seen[part];
+    weight += link.seen[part];
   }
-  return b * static_cast<double>(links_[k].factor);
+  return weight > 0 ? sum * (static_cast<double>(link.factor) / weight) : Rgb();
 }
 
 Rgb HierarchicalSolver::gathered(int node) const {

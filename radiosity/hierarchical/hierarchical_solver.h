@@ -53,8 +53,9 @@ class HierarchicalSolver : public Solver {
   }
   // B per node (area averages over its leaves), as the oracle and the viewer read it.
   const std::vector<Rgb>& nodeRadiosity() const { return nodeB_; }
-  // What link k of `receiver` brings it from the current B, before ρ: F · the source's B, a
-  // cluster's as it shows towards the receiver (its bins). A node gathers the sum of its links'.
+  // What link k of `receiver` brings it from the current B, before ρ: F · the source's B as the
+  // link's rays saw it (its parts weighted by their hits, Link::seen), a cluster's as it shows
+  // towards the receiver (its bins). A node gathers the sum of its links'.
   Rgb linkGather(int receiver, int64_t k) const;
   // Element e's correction of what the receivers above its deepest receiver gathered (the class
   // comment): B_e = E + ρ · (the deepest receiver's and its descendants' gather + this × the
@@ -62,6 +63,8 @@ class HierarchicalSolver : public Solver {
   float ancestorScale(int element) const { return scale_[element]; }
 
  private:
+  // Node s's B as a receiver sees it: a cluster's by its bins towards the receiver.
+  Rgb radianceSeen(int receiver, int s) const;
   Rgb gathered(int node) const;
   // Pushes `above` (gathered by the ancestors) plus the node's own gather to its leaves, sets B
   // there and on the way back up; returns the node's A·B.

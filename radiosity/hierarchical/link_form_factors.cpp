@@ -48,7 +48,10 @@ uint64_t LinkFormFactors::compute(LinkSet& links, const std::vector<int>& receiv
 uint64_t LinkFormFactors::computeReceiver(LinkSet& links, int receiver) const {
   const HierarchyNode& r = tree_.node(receiver);
   const int64_t first = links.begin(receiver), last = links.end(receiver);
-  for (int64_t k = first; k < last; ++k) links[k].factor = 0;
+  for (int64_t k = first; k < last; ++k) {
+    links[k].factor = 0;
+    links[k].seen = {};
+  }
   links.setAboveFraction(receiver, 0);
   const double lo = areaBefore_[r.leafBegin], hi = areaBefore_[r.leafEnd];
   if (first == last || !(hi > lo)) return 0;
@@ -69,6 +72,7 @@ uint64_t LinkFormFactors::computeReceiver(LinkSet& links, int receiver) const {
   int cast = 0;
   int leaf = -1;
   std::array<Eigen::Vector3d, 3> corners;
+  corners.fill(Eigen::Vector3d::Zero());  // set at the first origin; zeroed for the compiler
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   Frame frame(normal);
   for (int k = 0; k < n; ++k) {
@@ -107,6 +111,7 @@ uint64_t LinkFormFactors::computeReceiver(LinkSet& links, int receiver) const {
   std::vector<float> distance(cast);
   rays_.closestHits(cast, origin, direction, hit.data(), distance.data());
   std::vector<int> count(static_cast<size_t>(last - first), 0);
+  std::vector<std::array<int, Link::kSeenParts>> seen(static_cast<size_t>(last - first));
   int above = 0;
   for (int k = 0; k < cast; ++k) {
     const int h = hit[k];
@@ -118,6 +123,7 @@ uint64_t LinkFormFactors::computeReceiver(LinkSet& links, int receiver) const {
     const int64_t l = links.find(tree_, receiver, pos);
     if (l >= 0) {
       ++count[l - first];
+      ++seen[l - first][seenPart(tree_, links[l].source, pos)];
       continue;
     }
     for (int a = r.parent; a >= 0 && !tree_.node(a).isCluster(); a = tree_.node(a).parent)
@@ -126,8 +132,13 @@ uint64_t LinkFormFactors::computeReceiver(LinkSet& links, int receiver) const {
         break;
       }
   }
-  for (int64_t k = first; k < last; ++k)
-    links[k].factor = static_cast<float>(static_cast<double>(count[k - first]) / cast);
+  for (int64_t k = first; k < last; ++k) {
+    const int hits = count[k - first];
+    links[k].factor = static_cast<float>(static_cast<double>(hits) / cast);
+    for (int part = 0; part < Link::kSeenParts; ++part)
+      links[k].seen[part] =
+          hits > 0 ? static_cast<uint8_t>(std::lround(255.0 * seen[k - first][part] / hits)) : 0;
+  }
   links.setAboveFraction(receiver, static_cast<float>(static_cast<double>(above) / cast));
   return static_cast<uint64_t>(cast);
 }

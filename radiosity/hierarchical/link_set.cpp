@@ -25,6 +25,26 @@ LinkSet::LinkSet(const NodeHierarchy& tree, std::vector<NodePair>&& pairs) {
   std::vector<NodePair>().swap(pairs);
 }
 
+int seenPart(const NodeHierarchy& tree, int source, int leafPosition) {
+  int part = 0;
+  for (int level = 0; level < Link::kSeenDepth; ++level) {
+    const HierarchyNode& node = tree.node(source);
+    const bool second = !node.isLeaf() && leafPosition >= tree.node(node.child[0]).leafEnd;
+    part = 2 * part + (second ? 1 : 0);
+    if (!node.isLeaf()) source = node.child[second ? 1 : 0];
+  }
+  return part;
+}
+
+int seenPartNode(const NodeHierarchy& tree, int source, int part) {
+  for (int level = Link::kSeenDepth - 1; level >= 0; --level) {
+    const HierarchyNode& node = tree.node(source);
+    if (node.isLeaf()) break;
+    source = node.child[(part >> level) & 1];
+  }
+  return source;
+}
+
 std::vector<int> LinkSet::receivers() const {
   std::vector<int> out;
   for (int n = 0; n + 1 < static_cast<int>(begin_.size()); ++n)

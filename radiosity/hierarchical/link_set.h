@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -11,15 +12,30 @@ namespace rad {
 
 // One link of hierarchical radiosity: light gathered by its receiver node from `source`,
 // F = the form factor from the receiver to the source's leaves (receiver's area average).
+//
+// `seen` keeps where the link's rays met the source: the shares of its hits in each of the
+// source's grandchildren (kSeenParts, 8 bits each, normalised when read), so the solve reads the
+// source as its rays saw it rather than as its area average. Parts of a source that are both
+// darker and harder to see (its corners, the floor between boxes) otherwise count at their full
+// area: the generated room of 64 boxes came out 1.2% dark at the default --link-epsilon and 2.2%
+// at 0.1 (measured against a path-traced reference), each link's error leaning the same way.
 struct Link {
+  static constexpr int kSeenDepth = 2;  // grandchildren
+  static constexpr int kSeenParts = 1 << kSeenDepth;
   int source = -1;
   float factor = 0;
+  std::array<uint8_t, kSeenParts> seen{};
 };
+
+// Which of the source's kSeenParts parts holds the leaf at `leafPosition` (one of its leaves),
+// and the node of part `part`: the grandchild along the part's bits, or the leaf the way stops at.
+int seenPart(const NodeHierarchy& tree, int source, int leafPosition);
+int seenPartNode(const NodeHierarchy& tree, int source, int part);
 
 // A receiver node and a source node to link.
 using NodePair = std::pair<int, int>;
 
-// The links, grouped by receiver node (compressed rows: 8 bytes a link, 8 a node). A receiver's
+// The links, grouped by receiver node (compressed rows: 12 bytes a link, 8 a node). A receiver's
 // links are sorted by their sources' first leaf, so the link holding a leaf is found by binary
 // search: the sources linked to one receiver are disjoint subtrees.
 class LinkSet {
