@@ -56,6 +56,10 @@ class EmitterFirstShot {
   const std::vector<Rgb>& irradiance() const { return irradiance_; }  // D per element
 
  private:
+  void sortAlongSpace();
+  // Whether the segment from x (normal n) to y on an emitter (normal ny) is unoccluded.
+  bool visible(const Eigen::Vector3d& x, const Eigen::Vector3d& n, const Eigen::Vector3d& y,
+               const Eigen::Vector3d& ny) const;
   // D at point x of normal n, from raysPerPoint_ samples.
   Rgb directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& n, Rng& rng) const;
 
