@@ -13,9 +13,12 @@ Fits time and memory = c · N^k per solver and writes CSV, JSON and one PNG (tim
 against elements, all solvers).
 
     /usr/bin/python3 bench/hierarchical_scale.py [--build build] [--out bench/results]
-        [--sizes 10000,30000,100000] [--rays 256] [--threads 0] [--boxes 64]
-        [--row-solvers-up-to 300000] [--reference-sample 2000] [--reference-paths 16384]
-        [--no-reference]
+        [--sizes 10000,30000,100000] [--rays 256] [--hierarchical-rays N] [--threads 0]
+        [--boxes 64] [--row-solvers-up-to 300000] [--reference-sample 2000]
+        [--reference-paths 16384] [--no-reference] [--name hierarchical_scale]
+
+--hierarchical-rays gives the hierarchical solve its own --rays (default: --rays), to compare
+the solvers at equal error rather than equal rays; --name names the CSV, JSON and PNG written.
 
 The row solvers keep one form-factor row per element (about 9 KB each at 1024 rays): above
 --row-solvers-up-to elements only the hierarchical solve runs.
@@ -117,6 +120,8 @@ def main():
     parser.add_argument("--out", default=os.path.join(ROOT, "bench/results"))
     parser.add_argument("--sizes", default="10000,30000,100000")
     parser.add_argument("--rays", type=int, default=256)
+    parser.add_argument("--hierarchical-rays", type=int, default=0)
+    parser.add_argument("--name", default="hierarchical_scale")
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--boxes", type=int, default=64)
     parser.add_argument("--row-solvers-up-to", type=int, default=300000)
@@ -149,8 +154,9 @@ def main():
                 if solver != "hierarchical" and n > args.row_solvers_up_to:
                     continue
                 out = os.path.join(tmp, f"{solver}_{n}")
+                rays = args.hierarchical_rays if solver == "hierarchical" and args.hierarchical_rays else args.rays
                 cmd = ["/usr/bin/time", "-f", "%e %M", binary, "solve", scene, "--elements", str(n), "--rays",
-                       str(args.rays), "--threads", str(args.threads), "--solver", solver, "--out", out]
+                       str(rays), "--threads", str(args.threads), "--solver", solver, "--out", out]
                 run = subprocess.run(cmd, capture_output=True, text=True)
                 if run.returncode != 0:
                     print(run.stderr, file=sys.stderr)
@@ -168,7 +174,7 @@ def main():
                              "form_factor_s": s["time_seconds"]["form_factors"],
                              "solve_s": s["time_seconds"]["solve"], "rays": s["form_factors"]["rays_cast"],
                              "links": h.get("links", ""), "bytes_per_element": h.get("bytes_per_element", ""),
-                             "threads": s["threads"], "rays_per_element": args.rays,
+                             "threads": s["threads"], "rays_per_element": rays,
                              "relative_rms_vs_gauss_seidel": "", "relative_rms_vs_reference": error,
                              "reference_noise": reference_noise})
                 print(rows[-1], flush=True)
@@ -177,23 +183,23 @@ def main():
                     if r["target_elements"] == n and r["solver"] != "gauss-seidel":
                         r["relative_rms_vs_gauss_seidel"] = relative_rms(solutions[r["solver"]],
                                                                          solutions["gauss-seidel"])
-    tmp = os.path.join(args.out, "hierarchical_scale.csv.tmp")
+    tmp = os.path.join(args.out, args.name + ".csv.tmp")
     with open(tmp, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
-    os.replace(tmp, os.path.join(args.out, "hierarchical_scale.csv"))
+    os.replace(tmp, os.path.join(args.out, args.name + ".csv"))
     fits = {}
     for solver in SOLVERS:
         mine = [r for r in rows if r["solver"] == solver]
         if len(mine) >= 2:
             fits[solver] = {k: fit_exponent([r["elements"] for r in mine], [r[k] for r in mine])
                             for k in ("wall_s", "peak_mib")}
-    with open(os.path.join(args.out, "hierarchical_scale_fit.json"), "w") as f:
+    with open(os.path.join(args.out, args.name + "_fit.json"), "w") as f:
         json.dump(fits, f, indent=2)
     print("fitted exponents (quantity ~ N^k):", json.dumps(fits))
     if all(s in fits for s in SOLVERS if any(r["solver"] == s for r in rows)):
-        plot_png(os.path.join(args.out, "hierarchical_scale.png"), rows, fits,
+        plot_png(os.path.join(args.out, args.name + ".png"), rows, fits,
                  "Generated room (%d boxes), %d rays, %d threads: hierarchical against the row solvers"
                  % (args.boxes, args.rays, rows[0]["threads"]))
 
