@@ -2,9 +2,12 @@
 // sample of a mesh's elements, B = E + ρ · (the irradiance averaged over the element), the
 // irradiance estimated by the project's path tracer (unbiased: next-event estimation, MIS,
 // Russian roulette, no depth limit) from points spread uniformly over the element and
-// cosine-weighted directions. Solvers' elements.csv are compared with it on those elements
-// (bench/hierarchical_scale.py); each value's standard error is written beside it, so the
-// comparison can remove the reference's own noise.
+// cosine-weighted directions. The lights besides emissive polygons (sun, sky, lamps) are also
+// sampled at the element's own points, as the path tracer does at every diffuse vertex: a sun's
+// half-degree disc would otherwise reach a sunlit element only when a cosine ray happens to
+// leave through it, and its noise would swamp the error sought. Solvers' elements.csv are compared
+// with it on those elements (bench/hierarchical_scale.py); each value's standard error is written
+// beside it, so the comparison can remove the reference's own noise.
 //
 //   element_reference SCENE --elements N --out FILE.csv [--sample K] [--paths M] [--seed S]
 //                     [--threads T] [--lights FILE] [--sky ...]
@@ -37,6 +40,8 @@
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/render/path_tracer.h"
 #include "radiosity/render/render_scene.h"
+#include "radiosity/render/sampler.h"
+#include "radiosity/render/scene_lights.h"
 #include "radiosity/scene/scene_loader.h"
 
 namespace rad {
@@ -51,6 +56,21 @@ struct Args {
 struct Estimate {
   Rgb mean, standardError;
 };
+
+// One next-event estimate of the irradiance at `point` from the scene's lights besides the
+// emissive polygons: the delta lights exactly, each area light at infinity (sun disc, sky) by one
+// shadow ray, MIS-weighted against one cosine ray (SceneLights::sampleIrradiance).
+Rgb lightsAtInfinityAndLamps(const RenderScene& view, int e, const Eigen::Vector3d& point,
+                             const Eigen::Vector3d& normal, Rng& rng, RayCounts& counts) {
+  if (view.lights().empty()) return {};
+  SurfaceHit at;
+  at.element = e;
+  at.position = point;
+  at.normal = normal;
+  at.front = true;
+  RandomSampler sampler(rng);
+  return view.lights().sampleIrradiance(view, at, sampler, counts, 1);
+}
 
 // The mean of M path-traced irradiance samples over the element, and its standard error.
 Estimate elementIrradiance(const RenderScene& view, const PathTracer& tracer, int e, int paths,
@@ -73,7 +93,11 @@ Estimate elementIrradiance(const RenderScene& view, const PathTracer& tracer, in
       const Eigen::Vector3d direction =
           frame.toWorld(cosineWeightedDirection((j + rng.uniform()) / side, rng.uniform()));
       const Eigen::Vector3d origin = view.caster().liftOff(point, normal, direction);
-      const Rgb irradiance = M_PI * tracer.radiance(origin, direction, rng, counts);
+      Rgb irradiance = lightsAtInfinityAndLamps(view, e, point, normal, rng, counts);
+      if (view.intersect(origin, direction).hit())
+        irradiance += M_PI * tracer.radiance(origin, direction, rng, counts);
+      else  // out of the scene: the sky and sun by this ray's MIS weight against their samples
+        irradiance += M_PI * view.lights().escapedRadiance(direction, normal, 1);
       sum += irradiance;
       sumSquares += irradiance * irradiance;
     }
