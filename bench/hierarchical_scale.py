@@ -16,9 +16,13 @@ against elements, all solvers).
         [--sizes 10000,30000,100000] [--rays 256] [--hierarchical-rays N] [--threads 0]
         [--boxes 64] [--row-solvers-up-to 300000] [--reference-sample 2000]
         [--reference-paths 16384] [--no-reference] [--name hierarchical_scale]
+        [--scene SCENE --lights LIGHTS.json]
 
 --hierarchical-rays gives the hierarchical solve its own --rays (default: --rays), to compare
 the solvers at equal error rather than equal rays; --name names the CSV, JSON and PNG written.
+--scene solves a scene of one's own instead of the generated room (e.g. the atrium of
+../shared/scenes/, refined to each size), lit by --lights (a lights file, as radiosity solve
+--lights; the reference samples the same lights).
 
 The row solvers keep one form-factor row per element (about 9 KB each at 1024 rays): above
 --row-solvers-up-to elements only the hierarchical solve runs.
@@ -31,6 +35,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import zlib
 
 from growth import fit_exponent  # bench/growth.py: least-squares slope in log–log
 
@@ -128,27 +133,39 @@ def main():
     parser.add_argument("--reference-sample", type=int, default=2000)
     parser.add_argument("--reference-paths", type=int, default=16384)
     parser.add_argument("--no-reference", action="store_true")
+    parser.add_argument("--scene", help="a scene file instead of the generated room")
+    parser.add_argument("--lights", help="a lights file for --scene")
     args = parser.parse_args()
+    if args.lights and not args.scene:
+        parser.error("--lights needs --scene (the generated room has its own lamp)")
+    lights = ["--lights", os.path.abspath(args.lights)] if args.lights else []
     os.makedirs(args.out, exist_ok=True)
     binary = os.path.join(args.build, "bin/radiosity")
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        scene = os.path.join(tmp, "room.obj")
-        subprocess.run([sys.executable, os.path.join(ROOT, "bench/scene_generator.py"), scene, "--boxes",
-                        str(args.boxes)], check=True)
+        if args.scene:
+            scene = os.path.abspath(args.scene)
+            # The lights file's contents name the cached reference, so an edited file makes a new one.
+            light_tag = ("_lights%08x" % (zlib.crc32(open(args.lights, "rb").read()))) if args.lights else ""
+            scene_tag = os.path.splitext(os.path.basename(scene))[0] + light_tag
+        else:
+            scene = os.path.join(tmp, "room.obj")
+            subprocess.run([sys.executable, os.path.join(ROOT, "bench/scene_generator.py"), scene, "--boxes",
+                            str(args.boxes)], check=True)
+            scene_tag = "room%d" % args.boxes
         cache = os.path.join(args.out, "reference_cache")
         os.makedirs(cache, exist_ok=True)
         for n in [int(s) for s in args.sizes.split(",")]:
             solutions = {}
             reference = None
             if not args.no_reference:
-                ref_path = os.path.join(cache, "room%d_%d_sample%d_paths%d.csv"
-                                        % (args.boxes, n, args.reference_sample, args.reference_paths))
+                ref_path = os.path.join(cache, "%s_%d_sample%d_paths%d.csv"
+                                        % (scene_tag, n, args.reference_sample, args.reference_paths))
                 if not os.path.exists(ref_path):
                     subprocess.run([os.path.join(args.build, "bin/element_reference"), scene, "--elements",
                                     str(n), "--sample", str(args.reference_sample), "--paths",
                                     str(args.reference_paths), "--threads", str(args.threads), "--out",
-                                    ref_path], check=True)
+                                    ref_path] + lights, check=True)
                 reference = read_reference(ref_path)
             for solver in SOLVERS:
                 if solver != "hierarchical" and n > args.row_solvers_up_to:
@@ -156,7 +173,7 @@ def main():
                 out = os.path.join(tmp, f"{solver}_{n}")
                 rays = args.hierarchical_rays if solver == "hierarchical" and args.hierarchical_rays else args.rays
                 cmd = ["/usr/bin/time", "-f", "%e %M", binary, "solve", scene, "--elements", str(n), "--rays",
-                       str(rays), "--threads", str(args.threads), "--solver", solver, "--out", out]
+                       str(rays), "--threads", str(args.threads), "--solver", solver, "--out", out] + lights
                 run = subprocess.run(cmd, capture_output=True, text=True)
                 if run.returncode != 0:
                     print(run.stderr, file=sys.stderr)
@@ -200,8 +217,9 @@ def main():
     print("fitted exponents (quantity ~ N^k):", json.dumps(fits))
     if all(s in fits for s in SOLVERS if any(r["solver"] == s for r in rows)):
         plot_png(os.path.join(args.out, args.name + ".png"), rows, fits,
-                 "Generated room (%d boxes), %d rays, %d threads: hierarchical against the row solvers"
-                 % (args.boxes, args.rays, rows[0]["threads"]))
+                 "%s, %d rays, %d threads: hierarchical against the row solvers"
+                 % (os.path.basename(args.scene) if args.scene else "Generated room (%d boxes)" % args.boxes,
+                    args.rays, rows[0]["threads"]))
 
 
 if __name__ == "__main__":
