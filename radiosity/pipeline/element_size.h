@@ -14,7 +14,11 @@ std::string elementSizeRuleName(ElementSizeRule rule);  // "max-area", …, "sce
 // The size elements are meshed to. An element size S (scene units) stands for the area of the
 // equilateral triangle of edge S, S²·√3/4: elements are bisected until none is larger (they come
 // out between half and all of it). --elements N instead splits the largest elements until there
-// are N, and S is the edge whose equilateral area is the mean, total area / N.
+// are N, and S is the edge whose equilateral area is the mean, total area / N; then every element
+// above kCountedMaxAreaOverMean times that mean is split too, which binds only where the scene's
+// own small triangles took the count (the mesh then has more than N elements).
+inline constexpr double kCountedMaxAreaOverMean = 2;
+
 struct ElementSizing {
   ElementSizeRule rule = ElementSizeRule::SceneDefault;
   double edge = 0;      // S

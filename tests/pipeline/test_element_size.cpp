@@ -1,7 +1,8 @@
 // Which rule sets the element size, and what the mesh stage makes of it: the scene default
 // keeps the Cornell box's old mesh and is the same for the scene scaled by 1000; --elements is
-// met within 20%; slivers come out under the aspect bound; analytic factors on a scene of many
-// polygons are refused before any work.
+// met within 20%, and large surfaces are split on where small triangles took the count; slivers
+// come out under the aspect bound; analytic factors on a scene of many polygons are refused before
+// any work.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -104,6 +105,34 @@ TEST(ElementSize, RequestedCountsAreMetWithin20Percent) {
       EXPECT_GE(got, 0.8 * count) << scene->polygons.size() << " polygons, " << count;
       EXPECT_LE(got, 1.2 * count) << scene->polygons.size() << " polygons, " << count;
     }
+}
+
+TEST(ElementSize, LargeSurfacesAreSplitWhenSmallTrianglesTookTheCount) {
+  // 3200 tiny triangles (a 40 × 40 grid of 0.01 quads) beside a 4 × 4 floor of two: at
+  // --elements 1000 the count is taken before the floor is touched, yet no element may stay
+  // above twice the mean a mesh of 1000 equal elements would have.
+  Scene scene = gridScene(40, 0.01);
+  for (auto& p : scene.positions) p.y() = 1;  // out of the floor's plane, facing it
+  const int base = static_cast<int>(scene.positions.size());
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 4),
+                                   Eigen::Vector3d(4, 0, 4), Eigen::Vector3d(4, 0, 0)})
+    scene.positions.push_back(p);
+  ScenePolygon floor;
+  floor.vertices = std::vector<int>{base, base + 1, base + 2, base + 3};
+  scene.polygons.push_back(floor);
+  SolveOptions o;
+  o.targetElements = 1000;
+  const MeshedScene meshed = meshScene(scene, o);
+  const PatchMesh& mesh = *meshed.mesh;
+  const double bound = kCountedMaxAreaOverMean * mesh.totalArea() / 1000;
+  int floorElements = 0;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    EXPECT_LE(mesh.area(e), bound * (1 + 1e-12)) << "element " << e;
+    floorElements += std::fabs(mesh.centroid(e).y()) < 1e-12;
+  }
+  // Bisection to the bound leaves pieces between half and all of it.
+  EXPECT_GE(floorElements, 16 / bound);
+  EXPECT_LE(meshed.maxArea, bound * (1 + 1e-12));
 }
 
 TEST(ElementSize, SliversAreSplitEvenWhenSmallerThanTheElementArea) {
