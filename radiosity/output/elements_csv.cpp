@@ -1,5 +1,6 @@
 #include "radiosity/output/elements_csv.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -13,6 +14,8 @@
 
 namespace rad {
 namespace {
+
+constexpr size_t kBlockBytes = 1 << 16;
 
 std::vector<std::string> splitCsv(const std::string& line) {
   std::vector<std::string> fields;
@@ -44,26 +47,38 @@ int parseIndex(const std::string& text, const char* what, const std::string& fil
 void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vector<Rgb>& radiosity) {
   const int count = mesh.elementCount();
   RAD_CHECK_EQ(radiosity.size(), count);
-
-  // Save and restore the caller's formatting: the stream may be shared with other writers.
-  const std::ios_base::fmtflags flags = out.flags();
-  const std::streamsize precision = out.precision();
-  out.unsetf(std::ios_base::floatfield);  // %g style: shortest of fixed/scientific at 17 digits
-  out.precision(std::numeric_limits<double>::max_digits10);
-
-  out << kElementsCsvHeader << '\n';
+  // std::to_chars writes the shortest text that reads back as the same double, about ten times
+  // faster than a stream at 17 digits (a relight of a large scene was spending a second here).
+  // Rows are formatted into a buffer and written in blocks.
+  std::string block;
+  block.reserve(kBlockBytes + 512);
+  char number[32];
+  const auto field = [&](auto value, char after) {
+    const auto [end, error] = std::to_chars(number, number + sizeof number, value);
+    RAD_CHECK(error == std::errc());
+    block.append(number, end);
+    block.push_back(after);
+  };
+  block += kElementsCsvHeader;
+  block += '\n';
   for (int e = 0; e < count; ++e) {
     const Eigen::Vector3d c = mesh.centroid(e);
     const Eigen::Vector3d n = mesh.normal(e);
     const Rgb& b = radiosity[e];
     const Rgb l = b / M_PI;
-    out << e << ',' << mesh.patch(e) << ',' << mesh.material(e) << ',' << mesh.area(e) << ','
-        << c.x() << ',' << c.y() << ',' << c.z() << ',' << n.x() << ',' << n.y() << ',' << n.z()
-        << ',' << b.r << ',' << b.g << ',' << b.b << ',' << l.r << ',' << l.g << ',' << l.b << '\n';
+    field(e, ',');
+    field(mesh.patch(e), ',');
+    field(mesh.material(e), ',');
+    field(mesh.area(e), ',');
+    for (const double v : {c.x(), c.y(), c.z(), n.x(), n.y(), n.z(), b.r, b.g, b.b, l.r, l.g})
+      field(v, ',');
+    field(l.b, '\n');
+    if (block.size() >= kBlockBytes) {
+      out.write(block.data(), static_cast<std::streamsize>(block.size()));
+      block.clear();
+    }
   }
-
-  out.flags(flags);
-  out.precision(precision);
+  out.write(block.data(), static_cast<std::streamsize>(block.size()));
 }
 
 std::vector<ElementsCsvRow> readElementsCsv(std::istream& in, const std::string& source) {

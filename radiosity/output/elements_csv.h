@@ -15,8 +15,8 @@ namespace rad {
 //   element,patch,material,area,cx,cy,cz,nx,ny,nz,B_r,B_g,B_b,L_r,L_g,L_b
 // `material` is the scene's material index (names are in summary.json); area in scene units²;
 // c = centroid, n = unit front normal; B = radiosity (W·m⁻²) exactly as given; L = B/π, the
-// outgoing radiance (W·m⁻²·sr⁻¹) of the Lambertian element. Doubles are written with 17
-// significant digits so they read back bit-exact. The stream's formatting state is restored.
+// outgoing radiance (W·m⁻²·sr⁻¹) of the Lambertian element. Doubles are written as the shortest
+// text that reads back bit-exact (std::to_chars). The stream's formatting state is untouched.
 // `radiosity` has one entry per element (RAD_CHECK: CheckFailure otherwise).
 void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vector<Rgb>& radiosity);
 
