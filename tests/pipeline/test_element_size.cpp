@@ -5,6 +5,7 @@
 // any work.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -43,6 +44,15 @@ Scene gridScene(int n, double side) {
       scene.polygons.push_back(quad);
     }
   return scene;
+}
+
+// Adds the quad of the four corners, in order, as one polygon.
+void addQuad(Scene& scene, const std::array<Eigen::Vector3d, 4>& corners) {
+  const int base = static_cast<int>(scene.positions.size());
+  for (const Eigen::Vector3d& p : corners) scene.positions.push_back(p);
+  ScenePolygon quad;
+  quad.vertices = std::vector<int>{base, base + 1, base + 2, base + 3};
+  scene.polygons.push_back(quad);
 }
 
 TEST(ElementSize, EachOptionNamesItsRule) {
@@ -113,13 +123,8 @@ TEST(ElementSize, LargeSurfacesAreSplitWhenSmallTrianglesTookTheCount) {
   // above twice the mean a mesh of 1000 equal elements would have.
   Scene scene = gridScene(40, 0.01);
   for (auto& p : scene.positions) p.y() = 1;  // out of the floor's plane, facing it
-  const int base = static_cast<int>(scene.positions.size());
-  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 4),
-                                   Eigen::Vector3d(4, 0, 4), Eigen::Vector3d(4, 0, 0)})
-    scene.positions.push_back(p);
-  ScenePolygon floor;
-  floor.vertices = std::vector<int>{base, base + 1, base + 2, base + 3};
-  scene.polygons.push_back(floor);
+  addQuad(scene, {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 4), Eigen::Vector3d(4, 0, 4),
+                  Eigen::Vector3d(4, 0, 0)});  // the floor
   SolveOptions o;
   o.targetElements = 1000;
   const MeshedScene meshed = meshScene(scene, o);
@@ -140,13 +145,8 @@ TEST(ElementSize, SliversAreSplitEvenWhenSmallerThanTheElementArea) {
   // (total / 5000), yet its elements must come out well shaped down to S. (The floor's
   // triangles along it may stay thin fans: see PatchMesh::splitSlivers.)
   Scene scene = gridScene(1, 4);
-  const int base = static_cast<int>(scene.positions.size());
-  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 4), Eigen::Vector3d(0, 0, 4.1),
-                                   Eigen::Vector3d(4, 0, 4.1), Eigen::Vector3d(4, 0, 4)})
-    scene.positions.push_back(p);
-  ScenePolygon strip;
-  strip.vertices = std::vector<int>{base, base + 1, base + 2, base + 3};
-  scene.polygons.push_back(strip);
+  addQuad(scene, {Eigen::Vector3d(0, 0, 4), Eigen::Vector3d(0, 0, 4.1), Eigen::Vector3d(4, 0, 4.1),
+                  Eigen::Vector3d(4, 0, 4)});  // the strip
   SolveOptions o;
   o.targetElements = 5000;
   const MeshedScene meshed = meshScene(scene, o);
