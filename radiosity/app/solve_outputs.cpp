@@ -1,6 +1,8 @@
 // Writing a finished solve: elements.csv, vertex_colors.ply and summary.json.
 #include "radiosity/app/solve_outputs.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -182,22 +184,29 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   const Solution& solution = result.solution;
   const PatchMesh& mesh = *solution.mesh;
 
-  AtomicFile csv((dir / "elements.csv").string());
-  writeElementsCsv(csv.stream(), mesh, solution.radiosity);
-
-  const VertexInterpolation interpolation(mesh, solution.problem.area);  // exposed areas
-  const std::vector<Rgb> vertexRadiance =
-      interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
+  // The three large files are independent: written side by side (on a large scene each takes a
+  // good part of a second).
   const ToneMap toneMap = solutionToneMap(solution);
+  AtomicFile csv((dir / "elements.csv").string());
   AtomicFile ply((dir / "vertex_colors.ply").string(), /*binary=*/true);
-  writeVertexColorsPly(ply.stream(), interpolation, mesh, vertexRadiance, toneMap);
   std::vector<AtomicFile*> files = {&csv, &ply};
+  const auto writeCsv = [&] { writeElementsCsv(csv.stream(), mesh, solution.radiosity); };
+  const auto writePly = [&] {
+    const VertexInterpolation interpolation(mesh, solution.problem.area);  // exposed areas
+    const std::vector<Rgb> vertexRadiance =
+        interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
+    writeVertexColorsPly(ply.stream(), interpolation, mesh, vertexRadiance, toneMap);
+  };
 #ifdef RADIOSITY_HAS_VIEWER
   // ParaView-ready solution.vtp (the VTK viewer's format), committed with the others below.
   AtomicFile vtp((dir / "solution.vtp").string(), /*binary=*/true);
-  writeSolutionVtp(vtp.stream(), mesh, solution.radiosity, solution.unshot, toneMap,
-                   options.scenePath);
   files.push_back(&vtp);
+  tbb::parallel_invoke(writeCsv, writePly, [&] {
+    writeSolutionVtp(vtp.stream(), mesh, solution.radiosity, solution.unshot, toneMap,
+                     options.scenePath);
+  });
+#else
+  tbb::parallel_invoke(writeCsv, writePly);
 #endif
   // What render, bake and view --solution need to reuse elements.csv.
   std::unique_ptr<AtomicFile> saved;

@@ -201,7 +201,7 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
                       for (size_t k = range.begin(); k != range.end(); ++k) {
                         const int e = candidates[k];
                         FormFactorRow row =
-                            kept.rows[static_cast<size_t>(match[static_cast<size_t>(e)])];
+                            kept.rows.row(static_cast<size_t>(match[static_cast<size_t>(e)]));
                         renumber(row, newIndexOfOld);
                         if (formFactors.hemisphere().updateRow(e, row, edit, changedRays[e])) {
                           rows[static_cast<size_t>(e)] = std::move(row);
@@ -230,7 +230,7 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
           std::to_string(update.rowsOtherChange) +
           " with another exposed area or ray budget); in " + formatNumber(testSeconds) + " s");
   formFactors.adoptRows(std::move(rows), reuse);
-  next->rows = formFactors.takeAllRows();
+  next->rows = KeptRowTable(formFactors.takeAllRows());
   next->fingerprint = keptFactorsFingerprint(solution.scene, options);
   next->options = options;
 
@@ -240,8 +240,8 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   for (int e = 0; e < n; ++e)
     if (match[static_cast<size_t>(e)] >= 0) guess[e] = previous[match[static_cast<size_t>(e)]];
   KeptRows keptRows(*next);
-  const std::unique_ptr<Solver> solver = makeSolver(options.solver, solution.problem, keptRows,
-                                                    [&] { return keptRowsMatrix(next->rows); });
+  const std::unique_ptr<Solver> solver =
+      makeSolver(options.solver, solution.problem, keptRows, [&] { return next->rows.matrix(); });
   auto* gathering = dynamic_cast<GatheringSolver*>(solver.get());
   RAD_CHECK(gathering != nullptr);
   gathering->startFrom(std::move(guess));

@@ -62,10 +62,16 @@ class Reader {
   }
   template <typename T>
   std::vector<T> array(uint64_t count, const std::string& what) {
-    if (count > left() / sizeof(T)) fail("cut short in " + what);
-    std::vector<T> values(count);
-    bytes(values.data(), count * sizeof(T), what);
+    std::vector<T> values;
+    arrayInto(values, count, what);
     return values;
+  }
+  // Into `values`, reused across calls (the rows: no allocation per row).
+  template <typename T>
+  void arrayInto(std::vector<T>& values, uint64_t count, const std::string& what) {
+    if (count > left() / sizeof(T)) fail("cut short in " + what);
+    values.resize(count);
+    bytes(values.data(), count * sizeof(T), what);
   }
 
  private:
@@ -238,7 +244,8 @@ void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
     putArray(out, values);
   }
   std::vector<float> values, tinted;
-  for (const FormFactorRow& row : kept.rows) {
+  for (size_t i = 0; i < kept.rows.size(); ++i) {
+    const FormFactorRow row = kept.rows.row(i);
     put(out, static_cast<uint32_t>(row.targets.size()));
     put(out, static_cast<uint8_t>(!row.tinted.empty()));
     put(out, row.escaped);
@@ -266,7 +273,7 @@ void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
   putArray(out, multiplier);
 }
 
-KeptFactors readKeptFactors(const std::string& path) {
+KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
   Reader reader(path);
   std::string magic(std::strlen(kMagic), '\0');
   reader.bytes(magic.data(), magic.size(), "the first line");
@@ -302,6 +309,7 @@ KeptFactors readKeptFactors(const std::string& path) {
     reader.fail(std::to_string(n) + " elements: more than a solve makes (" +
                 std::to_string(static_cast<uint64_t>(kMaxElements)) + ")");
   kept.options.scenePath = kept.scenePath;
+  if (parts == KeptParts::Header) return kept;
   kept.area = reader.array<double>(n, "the areas");
   for (double a : kept.area)
     if (!finiteNonNegative(a)) reader.fail("an element's area is negative or not finite");
@@ -318,30 +326,37 @@ KeptFactors readKeptFactors(const std::string& path) {
   // Each row takes at least 13 bytes: the header's count allocates no more rows than the file
   // holds.
   if (n > reader.left() / 13) reader.fail("cut short in the rows");
-  kept.rows.resize(n);
+  // Each factor takes at least 8 bytes: what is left bounds the factors to reserve.
+  kept.rows.reserve(n, reader.left() / 8);
+  std::vector<int32_t> targets;
+  std::vector<float> values, tinted;
   for (size_t i = 0; i < n; ++i) {
     const std::string what = "row " + std::to_string(i);
-    FormFactorRow& row = kept.rows[i];
     const auto count = reader.get<uint32_t>(what);
-    const auto tinted = reader.get<uint8_t>(what);
-    row.escaped = reader.get<double>(what);
-    if (count > n || tinted > 1 || !finiteNonNegative(row.escaped))
+    const auto isTinted = reader.get<uint8_t>(what);
+    const auto escaped = reader.get<double>(what);
+    if (count > n || isTinted > 1 || !finiteNonNegative(escaped))
       reader.fail(what + ": not a form-factor row (" + std::to_string(count) + " targets)");
-    row.targets = reader.array<int32_t>(count, what);
-    const std::vector<float> values = reader.array<float>(count, what);
-    row.values.assign(values.begin(), values.end());
-    for (uint32_t k = 0; k < count; ++k)
-      if (row.targets[k] < 0 || static_cast<uint64_t>(row.targets[k]) >= n ||
-          (k > 0 && row.targets[k] <= row.targets[k - 1]) || !finiteNonNegative(row.values[k]))
-        reader.fail(what + ": targets must be increasing element indices and factors finite, >= 0");
-    if (row.sum() > 1 + 1e-4) reader.fail(what + ": its factors sum past 1");
-    if (!tinted) continue;
-    const std::vector<float> t = reader.array<float>(3 * static_cast<uint64_t>(count), what);
+    reader.arrayInto(targets, count, what);
+    reader.arrayInto(values, count, what);
+    double sum = 0;
     for (uint32_t k = 0; k < count; ++k) {
-      row.tinted.push_back({t[3 * k], t[3 * k + 1], t[3 * k + 2]});
-      if (!row.tinted.back().isFinite() || row.tinted.back().minComponent() < 0)
-        reader.fail(what + ": tinted factors must be finite, >= 0");
+      if (targets[k] < 0 || static_cast<uint64_t>(targets[k]) >= n ||
+          (k > 0 && targets[k] <= targets[k - 1]) || !finiteNonNegative(values[k]))
+        reader.fail(what + ": targets must be increasing element indices and factors finite, >= 0");
+      sum += values[k];
     }
+    if (sum > 1 + 1e-4) reader.fail(what + ": its factors sum past 1");
+    std::vector<Rgb> tintedFactors;
+    if (isTinted) {
+      reader.arrayInto(tinted, 3 * static_cast<uint64_t>(count), what);
+      for (uint32_t k = 0; k < count; ++k) {
+        tintedFactors.push_back({tinted[3 * k], tinted[3 * k + 1], tinted[3 * k + 2]});
+        if (!tintedFactors.back().isFinite() || tintedFactors.back().minComponent() < 0)
+          reader.fail(what + ": tinted factors must be finite, >= 0");
+      }
+    }
+    kept.rows.appendRow(targets.data(), values.data(), count, escaped, std::move(tintedFactors));
   }
   if (!(kept.elementEdge > 0) || !std::isfinite(kept.elementEdge))
     reader.fail("the header's element_edge must be a positive number");
@@ -423,33 +438,6 @@ SolveOptions withSolverOf(SolveOptions kept, const SolveOptions& solver) {
   kept.timeLimit = solver.timeLimit;
   kept.outputDir = solver.outputDir;
   return kept;
-}
-
-Eigen::SparseMatrix<double, Eigen::RowMajor> keptRowsMatrix(
-    const std::vector<FormFactorRow>& rows) {
-  const int n = static_cast<int>(rows.size());
-  size_t entries = 0;
-  for (const FormFactorRow& row : rows) {
-    if (!row.tinted.empty())
-      throw InputError(
-          "form factors through mirrors or glass are tinted per channel; the gathering solvers "
-          "use one matrix for all channels: use --solver progressive for this scene");
-    entries += row.targets.size();
-  }
-  // Compressed row storage written directly: the rows are sorted by target already.
-  Eigen::SparseMatrix<double, Eigen::RowMajor> f(n, n);
-  f.resizeNonZeros(static_cast<Eigen::Index>(entries));
-  size_t at = 0;
-  for (int i = 0; i < n; ++i) {
-    f.outerIndexPtr()[i] = static_cast<int>(at);
-    const FormFactorRow& row = rows[static_cast<size_t>(i)];
-    for (size_t k = 0; k < row.targets.size(); ++k, ++at) {
-      f.innerIndexPtr()[at] = row.targets[k];
-      f.valuePtr()[at] = row.values[k];
-    }
-  }
-  f.outerIndexPtr()[n] = static_cast<int>(at);
-  return f;
 }
 
 }  // namespace rad

@@ -11,6 +11,7 @@
 #include "radiosity/core/rgb.h"
 #include "radiosity/formfactors/form_factor_row.h"
 #include "radiosity/formfactors/shot_rows.h"
+#include "radiosity/pipeline/kept_row_table.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_options.h"
 #include "radiosity/scene/lights.h"
@@ -33,7 +34,7 @@ struct KeptFactors {
   std::vector<std::string> lightGroups;           // per light: its group (light_groups.h)
   std::vector<std::string> lightTypes;            // per light: lightTypeName
   std::vector<std::vector<Rgb>> lightIrradiance;  // per light, per element: E_d (W·m⁻²)
-  std::vector<FormFactorRow> rows;                // per element: its hemisphere row
+  KeptRowTable rows;                              // per element: its hemisphere row
 
   // For `update` after a geometry edit (incremental.h): what the mesh was, to tell which elements
   // stayed put, and the inputs that must be the same again.
@@ -62,7 +63,10 @@ std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& optio
 void writeKeptFactors(std::ostream& out, const KeptFactors& kept);
 // InputError naming the file (and the row or array) when it is not such a file, is cut short or
 // holds values no solve writes (targets out of range, negative or non-finite factors).
-KeptFactors readKeptFactors(const std::string& path);
+// KeptParts::Header reads only the header (scene, options, lights; no arrays): enough to load the
+// scene while the rest is read.
+enum class KeptParts { All, Header };
+KeptFactors readKeptFactors(const std::string& path, KeptParts parts = KeptParts::All);
 
 // --keep-factors: each light's first shot on its own (no lamp sampling across lights, so relight
 // can scale each E_d), added to the emission; the rays per emitter row from each source's own
@@ -78,23 +82,23 @@ std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster
 // `solver`: what relight and update solve with.
 SolveOptions withSolverOf(SolveOptions kept, const SolveOptions& solver);
 
-// F as the gathering solvers read it, from rows sorted by target (FormFactorCache::matrix's
-// rule), written directly as compressed rows. InputError for tinted rows (mirrors and glass):
-// the gathering solvers use one matrix for all channels.
-Eigen::SparseMatrix<double, Eigen::RowMajor> keptRowsMatrix(const std::vector<FormFactorRow>& rows);
-
-// The kept rows as progressive shooting reads them (elements shoot their own rows).
+// The kept rows as progressive shooting reads them (elements shoot their own rows). A row is
+// valid until the next call.
 class KeptRows : public ShotRows {
  public:
   explicit KeptRows(const KeptFactors& kept) : kept_(kept) {}
   int shooterCount() const override { return static_cast<int>(kept_.rows.size()); }
   int shooterOf(int element) const override { return element; }
   double shooterArea(int shooter) const override { return kept_.area[shooter]; }
-  const FormFactorRow& powerFractions(int shooter) override { return kept_.rows[shooter]; }
+  const FormFactorRow& powerFractions(int shooter) override {
+    row_ = kept_.rows.row(static_cast<size_t>(shooter));
+    return row_;
+  }
   std::string description() const override { return "kept element rows (hemisphere)"; }
 
  private:
   const KeptFactors& kept_;
+  FormFactorRow row_;
 };
 
 }  // namespace rad

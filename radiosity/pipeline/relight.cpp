@@ -26,7 +26,7 @@ Scene loadKeptScene(const KeptFactors& kept) {
   return scene;
 }
 
-SolveResult relightScene(const KeptFactors& kept, const std::string& keptPath, Scene scene,
+SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene scene,
                          const std::vector<Rgb>& lightScale, const SolveOptions& solverOptions) {
   RAD_CHECK_EQ(lightScale.size(), kept.lightIrradiance.size());
   const auto start = std::chrono::steady_clock::now();
@@ -74,7 +74,7 @@ SolveResult relightScene(const KeptFactors& kept, const std::string& keptPath, S
 
   KeptRows rows(kept);
   const std::unique_ptr<Solver> solver =
-      makeSolver(options.solver, solution.problem, rows, [&] { return keptRowsMatrix(kept.rows); });
+      makeSolver(options.solver, solution.problem, rows, [&] { return kept.rows.takeMatrix(); });
   const IterationLimits limits = iterationLimits(options, n, start);
   report.stoppedBy = iterate(*solver, limits);
   report.converged = converged(report.stoppedBy);

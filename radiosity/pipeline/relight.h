@@ -18,8 +18,9 @@ Scene loadKeptScene(const KeptFactors& kept);
 // meshing is deterministic), ρ and E from `scene`'s materials (the caller's overrides applied),
 // each light's kept E_d times lightScale[l], and the kept rows and exposed areas. `solverOptions`
 // supplies the solver, tolerance, iteration budget and threads. Throws InputError naming
-// `keptPath` when the scene's geometry no longer matches the kept factors.
-SolveResult relightScene(const KeptFactors& kept, const std::string& keptPath, Scene scene,
+// `keptPath` when the scene's geometry no longer matches the kept factors. Takes `kept` by value:
+// the gathering solvers take its rows over (move it in when it is not needed again).
+SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene scene,
                          const std::vector<Rgb>& lightScale, const SolveOptions& solverOptions);
 
 }  // namespace rad

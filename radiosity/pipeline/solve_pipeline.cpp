@@ -217,7 +217,9 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
     }
     refinement.finish(report);
     const double solveAndRows = secondsSince(t);
-    if (kept) kept->rows = formFactors.takeAllRows();  // the rows shooting never asked for too
+    if (kept)
+      kept->rows =
+          KeptRowTable(formFactors.takeAllRows());  // the rows shooting never asked for too
     formFactors.report(report, options.solver);
     if (!kept) directLight.report(report);
     report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);

@@ -1,5 +1,8 @@
 #include "radiosity/solvers/gathering_solvers.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <Eigen/SparseLU>
 #include <stdexcept>
 
@@ -22,9 +25,13 @@ SparseRows gatherMatrix(const RadiosityProblem& problem, FormFactorCache& cache,
 
 double relativeResidual(const RadiosityProblem& problem, const SparseRows& f,
                         const std::vector<Rgb>& b) {
+  // Each element's residual on its own: side by side (a pass over F as long as a sweep's).
   std::vector<Rgb> r(problem.size());
-  for (int i = 0; i < problem.size(); ++i)
-    r[i] = problem.emission[i] + problem.reflectance[i] * gatherRow(f, i, b) - b[i];
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, problem.size(), 256), [&](const tbb::blocked_range<int>& range) {
+        for (int i = range.begin(); i != range.end(); ++i)
+          r[i] = problem.emission[i] + problem.reflectance[i] * gatherRow(f, i, b) - b[i];
+      });
   return relativeToEmission(problem, r);
 }
 
@@ -47,8 +54,11 @@ void GatheringSolver::finishSweep() {
 
 void JacobiSolver::step() {
   std::vector<Rgb> next(problem_.size());
-  for (int i = 0; i < problem_.size(); ++i)
-    next[i] = problem_.emission[i] + problem_.reflectance[i] * gatherRow(f_, i, solution_);
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, problem_.size(), 256), [&](const tbb::blocked_range<int>& range) {
+        for (int i = range.begin(); i != range.end(); ++i)
+          next[i] = problem_.emission[i] + problem_.reflectance[i] * gatherRow(f_, i, solution_);
+      });
   solution_.swap(next);
   finishSweep();
 }

@@ -52,7 +52,8 @@ void checkKept(const rad::KeptFactors& k) {
     check(e.size() == n, "not one E_d per element");
     for (const rad::Rgb& c : e) check(valid(c), "bad E_d");
   }
-  for (const rad::FormFactorRow& row : k.rows) {
+  for (size_t i = 0; i < k.rows.size(); ++i) {
+    const rad::FormFactorRow row = k.rows.row(i);
     check(row.values.size() == row.targets.size(), "not one value per target");
     check(row.tinted.empty() || row.tinted.size() == row.targets.size(),
           "not one tinted factor per target");
@@ -96,10 +97,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   check(back->lightIrradiance.size() == kept->lightIrradiance.size(),
         "light count differs after the round trip");
   for (size_t i = 0; i < kept->rows.size(); ++i) {
-    check(back->rows[i].targets == kept->rows[i].targets, "targets differ after the round trip");
-    check(back->rows[i].values == kept->rows[i].values, "factors differ after the round trip");
-    check(back->rows[i].tinted.size() == kept->rows[i].tinted.size(),
-          "tinted factors differ after the round trip");
+    const rad::FormFactorRow a = kept->rows.row(i), b = back->rows.row(i);
+    check(b.targets == a.targets, "targets differ after the round trip");
+    check(b.values == a.values, "factors differ after the round trip");
+    check(b.tinted.size() == a.tinted.size(), "tinted factors differ after the round trip");
   }
   check(back->scenePath == kept->scenePath && back->fingerprint == kept->fingerprint,
         "header differs after the round trip");

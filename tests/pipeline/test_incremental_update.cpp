@@ -105,8 +105,8 @@ TEST_F(IncrementalUpdate, MovedBlockEqualsAFreshSolveAndReusesTheRowsItCannotCha
   EXPECT_GT(u.moved, 0);
   // Every row, reused or cast again, is the row the fresh solve cast.
   for (int e = 0; e < n; ++e) {
-    const FormFactorRow& a = updated.kept->rows[e];
-    const FormFactorRow& b = reference.kept->rows[e];
+    const FormFactorRow a = updated.kept->rows.row(static_cast<size_t>(e));
+    const FormFactorRow b = reference.kept->rows.row(static_cast<size_t>(e));
     ASSERT_EQ(a.targets, b.targets) << "element " << e;
     for (size_t k = 0; k < a.values.size(); ++k) ASSERT_DOUBLE_EQ(a.values[k], b.values[k]);
   }

@@ -29,6 +29,23 @@ constexpr size_t kMagicBytes = 25;  // "radiosity kept factors 2\n"
 
 // 4 elements, 2 lights; row 0 plain, row 1 tinted, row 2 empty (all escaped), row 3 plain with
 // values a float does not hold exactly.
+// Four rows: three targets, two tinted targets, none, three (values that are no float).
+std::vector<FormFactorRow> sampleRows() {
+  std::vector<FormFactorRow> rows(4);
+  rows[0].targets = {1, 2, 3};
+  rows[0].values = {0.25, 0.125, 0.3};
+  rows[0].escaped = 0.325;
+  rows[1].targets = {0, 3};
+  rows[1].values = {0.5, 0.2};
+  rows[1].tinted = {{0.5, 0.4, 0.3}, {0.2, 0.1, 0.05}};
+  rows[1].escaped = 0.3;
+  rows[2].escaped = 1;
+  rows[3].targets = {0, 1, 2};
+  rows[3].values = {0.1, 0.2, 0.3};
+  rows[3].escaped = 0.4;
+  return rows;
+}
+
 KeptFactors sample() {
   KeptFactors k;
   k.scenePath = "scene.obj";
@@ -46,18 +63,7 @@ KeptFactors sample() {
   k.lightTypes = {"spot", "directional"};
   k.lightIrradiance = {{{1, 2, 3}, {0.1, 0.2, 0.3}, {0, 0, 0}, {4, 5, 6}},
                        {{0, 0, 0}, {7, 7, 7}, {1.0 / 7, 2, 3}, {0.5, 0, 0.25}}};
-  k.rows.resize(4);
-  k.rows[0].targets = {1, 2, 3};
-  k.rows[0].values = {0.25, 0.125, 0.3};
-  k.rows[0].escaped = 0.325;
-  k.rows[1].targets = {0, 3};
-  k.rows[1].values = {0.5, 0.2};
-  k.rows[1].tinted = {{0.5, 0.4, 0.3}, {0.2, 0.1, 0.05}};
-  k.rows[1].escaped = 0.3;
-  k.rows[2].escaped = 1;
-  k.rows[3].targets = {0, 1, 2};
-  k.rows[3].values = {0.1, 0.2, 0.3};
-  k.rows[3].escaped = 0.4;
+  k.rows = KeptRowTable(sampleRows());
   k.elementEdge = 0.125;
   k.lightInput.file = "lamps.lights.json";
   k.lightInput.shortcuts = {skyLight({0.3, 0.4, 0.5}), sunLight({0.3, -1, 0.25}, {8, 7, 6})};
@@ -84,14 +90,14 @@ struct Layout {
     const KeptFactors k = sample();
     size_t at = rows;
     for (int r = 0; r < i; ++r) {
-      const size_t c = k.rows[r].targets.size();
-      at += 4 + 1 + 8 + 4 * c + 4 * c + (k.rows[r].tinted.empty() ? 0 : 12 * c);
+      const size_t c = k.rows.row(r).targets.size();
+      at += 4 + 1 + 8 + 4 * c + 4 * c + (k.rows.row(r).tinted.empty() ? 0 : 12 * c);
     }
     return at;
   }
   size_t rowTarget(int i, size_t k) const { return row(i) + 13 + 4 * k; }
   size_t rowValue(int i, size_t k) const {
-    return row(i) + 13 + 4 * sample().rows[i].targets.size() + 4 * k;
+    return row(i) + 13 + 4 * sample().rows.row(i).targets.size() + 4 * k;
   }
 };
 
@@ -197,8 +203,8 @@ TEST_F(KeptFactorsTest, RoundTripKeepsEveryField) {
   }
   ASSERT_EQ(out.rows.size(), 4u);
   for (size_t i = 0; i < 4; ++i) {
-    const FormFactorRow& a = in.rows[i];
-    const FormFactorRow& b = out.rows[i];
+    const FormFactorRow a = sampleRows()[i];
+    const FormFactorRow b = out.rows.row(i);
     EXPECT_EQ(b.targets, a.targets) << "row " << i;
     EXPECT_EQ(b.escaped, a.escaped) << "row " << i;
     ASSERT_EQ(b.values.size(), a.values.size()) << "row " << i;
@@ -211,7 +217,7 @@ TEST_F(KeptFactorsTest, RoundTripKeepsEveryField) {
     EXPECT_TRUE(b.points.empty());
   }
   // 0.1 is no float: the rounding is real, so the comparison above is not a tautology.
-  EXPECT_NE(out.rows[3].values[0], 0.1);
+  EXPECT_NE(out.rows.row(3).values[0], 0.1);
   // The mesh and inputs update compares against.
   EXPECT_EQ(out.elementEdge, in.elementEdge);
   EXPECT_EQ(out.corners, in.corners);
@@ -234,7 +240,7 @@ TEST_F(KeptFactorsTest, RoundTripKeepsEveryField) {
 TEST_F(KeptFactorsTest, NoElementsNoLightsRoundTrip) {
   KeptFactors in = sample();
   in.area.clear();
-  in.rows.clear();
+  in.rows = KeptRowTable();
   in.lightGroups.clear();
   in.lightTypes.clear();
   in.lightIrradiance.clear();
@@ -245,7 +251,7 @@ TEST_F(KeptFactorsTest, NoElementsNoLightsRoundTrip) {
   write(bytesOf(in));
   const KeptFactors out = readKeptFactors(path_);
   EXPECT_TRUE(out.area.empty());
-  EXPECT_TRUE(out.rows.empty());
+  EXPECT_EQ(out.rows.size(), 0u);
   EXPECT_TRUE(out.lightIrradiance.empty());
   EXPECT_EQ(out.fingerprint, "abc");
 }

@@ -1,0 +1,90 @@
+#include "radiosity/pipeline/kept_row_table.h"
+
+#include <limits>
+#include <utility>
+
+#include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
+#include "radiosity/core/huge_pages.h"
+
+namespace rad {
+
+KeptRowTable::KeptRowTable(const std::vector<FormFactorRow>& rows) {
+  size_t factors = 0;
+  for (const FormFactorRow& row : rows) factors += row.targets.size();
+  reserve(rows.size(), factors);
+  std::vector<int32_t> targets;
+  std::vector<float> values;
+  for (const FormFactorRow& row : rows) {
+    targets.assign(row.targets.begin(), row.targets.end());
+    values.assign(row.values.begin(), row.values.end());  // factors.bin keeps f32
+    appendRow(targets.data(), values.data(), targets.size(), row.escaped, row.tinted);
+  }
+}
+
+void KeptRowTable::reserve(size_t rows, size_t maxFactors) {
+  RAD_CHECK(size() == 0);
+  RAD_CHECK(rows < static_cast<size_t>(std::numeric_limits<int>::max()));
+  // Eigen indexes the factors with int: beyond that no matrix holds them.
+  if (maxFactors > static_cast<size_t>(std::numeric_limits<int>::max()))
+    maxFactors = static_cast<size_t>(std::numeric_limits<int>::max());
+  f_ = Matrix(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(rows));
+  // Reserved, not written: untouched pages of the bound cost no memory.
+  f_.data().reserve(static_cast<Eigen::Index>(maxFactors));
+  adviseHugePages(f_.valuePtr(), maxFactors * sizeof(double));
+  adviseHugePages(f_.innerIndexPtr(), maxFactors * sizeof(int));
+  f_.outerIndexPtr()[0] = 0;
+  escaped_.reserve(rows);
+  tinted_.reserve(rows);
+  reservedRows_ = rows;
+}
+
+void KeptRowTable::appendRow(const int32_t* targets, const float* values, size_t count,
+                             double escaped, std::vector<Rgb> tinted) {
+  RAD_CHECK(size() < reservedRows_);
+  RAD_CHECK(tinted.empty() || tinted.size() == count);
+  const auto at = static_cast<size_t>(f_.outerIndexPtr()[size()]);
+  RAD_CHECK(count <= static_cast<size_t>(std::numeric_limits<int>::max()) - at);
+  f_.data().resize(static_cast<Eigen::Index>(at + count));
+  for (size_t k = 0; k < count; ++k) {
+    f_.innerIndexPtr()[at + k] = targets[k];
+    f_.valuePtr()[at + k] = values[k];
+  }
+  f_.outerIndexPtr()[size() + 1] = static_cast<int>(at + count);
+  escaped_.push_back(escaped);
+  if (!tinted.empty()) ++tintedRows_;
+  tinted_.push_back(std::move(tinted));
+}
+
+void KeptRowTable::swap(KeptRowTable& other) noexcept {
+  f_.swap(other.f_);
+  escaped_.swap(other.escaped_);
+  tinted_.swap(other.tinted_);
+  std::swap(tintedRows_, other.tintedRows_);
+  std::swap(reservedRows_, other.reservedRows_);
+}
+
+FormFactorRow KeptRowTable::row(size_t i) const {
+  RAD_CHECK(i < size());
+  FormFactorRow row;
+  const int begin = f_.outerIndexPtr()[i], end = f_.outerIndexPtr()[i + 1];
+  row.targets.assign(f_.innerIndexPtr() + begin, f_.innerIndexPtr() + end);
+  row.values.assign(f_.valuePtr() + begin, f_.valuePtr() + end);
+  row.tinted = tinted_[i];
+  row.escaped = escaped_[i];
+  return row;
+}
+
+KeptRowTable::Matrix KeptRowTable::takeMatrix() {
+  if (anyTinted())
+    throw InputError(
+        "form factors through mirrors or glass are tinted per channel; the gathering solvers "
+        "use one matrix for all channels: use --solver progressive for this scene");
+  RAD_CHECK(size() == reservedRows_);
+  Matrix f;
+  f.swap(f_);  // Eigen 3.4's move copies every entry; swap does not
+  KeptRowTable().swap(*this);
+  return f;
+}
+
+}  // namespace rad

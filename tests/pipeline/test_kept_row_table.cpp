@@ -1,0 +1,82 @@
+// KeptRowTable: the kept rows as one compressed-row matrix. What goes in comes out row by row (at
+// factors.bin's f32 precision), the matrix the gathering solvers take is F, and moving a table
+// hands its storage over (relight relies on it not copying 35 million factors).
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "radiosity/core/errors.h"
+#include "radiosity/pipeline/kept_row_table.h"
+
+namespace rad {
+namespace {
+
+std::vector<FormFactorRow> threeRows() {
+  std::vector<FormFactorRow> rows(3);
+  rows[0].targets = {1, 2};
+  rows[0].values = {0.25, 0.1};  // 0.1 is no float
+  rows[0].escaped = 0.65;
+  rows[2].targets = {0};
+  rows[2].values = {0.5};
+  rows[2].escaped = 0.5;
+  return rows;
+}
+
+TEST(KeptRowTable, GivesBackEachRowAtFloatPrecision) {
+  const std::vector<FormFactorRow> in = threeRows();
+  const KeptRowTable table(in);
+  ASSERT_EQ(table.size(), 3u);
+  EXPECT_EQ(table.factorCount(), 3u);
+  for (size_t i = 0; i < in.size(); ++i) {
+    const FormFactorRow out = table.row(i);
+    EXPECT_EQ(out.targets, in[i].targets) << i;
+    EXPECT_EQ(out.escaped, in[i].escaped) << i;
+    ASSERT_EQ(out.values.size(), in[i].values.size()) << i;
+    for (size_t k = 0; k < out.values.size(); ++k)
+      EXPECT_EQ(out.values[k], static_cast<double>(static_cast<float>(in[i].values[k])));
+    EXPECT_TRUE(out.tinted.empty());
+  }
+  EXPECT_NE(table.row(0).values[1], 0.1);
+}
+
+TEST(KeptRowTable, TheMatrixIsFRowByRow) {
+  KeptRowTable table(threeRows());
+  const KeptRowTable::Matrix copy = table.matrix();
+  EXPECT_EQ(table.size(), 3u);  // matrix() keeps the table
+  const KeptRowTable::Matrix f = table.takeMatrix();
+  EXPECT_EQ(table.size(), 0u);  // takeMatrix() empties it
+  ASSERT_EQ(f.rows(), 3);
+  ASSERT_EQ(f.cols(), 3);
+  EXPECT_EQ(f.nonZeros(), 3);
+  EXPECT_EQ(f.coeff(0, 1), 0.25);
+  EXPECT_EQ(f.coeff(0, 2), static_cast<double>(0.1f));
+  EXPECT_EQ(f.coeff(1, 0), 0.0);
+  EXPECT_EQ(f.coeff(2, 0), 0.5);
+  EXPECT_EQ(copy.coeff(0, 2), f.coeff(0, 2));
+}
+
+TEST(KeptRowTable, MovingHandsTheStorageOver) {
+  KeptRowTable a(threeRows());
+  KeptRowTable b(std::move(a));
+  EXPECT_EQ(b.size(), 3u);
+  // Left empty, factors included: Eigen's own "move" would have copied them and left them.
+  EXPECT_EQ(a.size(), 0u);         // NOLINT(bugprone-use-after-move)
+  EXPECT_EQ(a.factorCount(), 0u);  // NOLINT(bugprone-use-after-move)
+  KeptRowTable c;
+  c = std::move(b);
+  EXPECT_EQ(c.size(), 3u);
+  EXPECT_EQ(c.row(2).values, std::vector<double>{0.5});
+}
+
+TEST(KeptRowTable, TintedRowsHaveNoOneMatrix) {
+  std::vector<FormFactorRow> rows = threeRows();
+  rows[2].tinted = {{0.5, 0.25, 0.125}};
+  KeptRowTable table(rows);
+  EXPECT_TRUE(table.anyTinted());
+  EXPECT_EQ(table.row(2).tinted.size(), 1u);
+  EXPECT_EQ(table.row(2).tinted[0].g, 0.25);
+  EXPECT_THROW(table.takeMatrix(), InputError);
+}
+
+}  // namespace
+}  // namespace rad
