@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 #include <future>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -52,6 +53,7 @@ void runRelight(const RelightOptions& o) {
           std::to_string(kept.rows.factorCount()) + " factors) and the scene in " +
           formatNumber(secondsSince(t)) + " s");
   std::vector<Rgb> lightScale(kept.lightIrradiance.size(), Rgb::all(1));
+  std::map<int, MaterialOverride> materialChanges;
   if (!o.overrideFile.empty()) {
     std::vector<std::string> materialNames;
     for (const Material& m : scene.materials) materialNames.push_back(m.name);
@@ -63,6 +65,7 @@ void runRelight(const RelightOptions& o) {
       if (change.emission) m.emission = *change.emission;
     }
     lightScale = overrides.lightScale;
+    materialChanges = overrides.materials;
   }
   SolveOptions solver = header.options;
   if (o.solverName) solver.solver = parseSolverKind(*o.solverName);
@@ -72,6 +75,7 @@ void runRelight(const RelightOptions& o) {
   solver.outputDir = o.outputDir.empty() ? o.dir : o.outputDir;
   SolveResult result =
       relightScene(std::move(kept), keptPath, std::move(scene), lightScale, solver);
+  result.report.relitMaterials = std::move(materialChanges);  // for solution.json
   throwIfInterrupted();
   SolveOptions written = header.options;
   written.solver = solver.solver;

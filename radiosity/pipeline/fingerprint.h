@@ -4,8 +4,11 @@
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "radiosity/core/rgb.h"
+#include "radiosity/scene/environment_map.h"
+#include "radiosity/scene/lights.h"
 #include "radiosity/scene/scene.h"
 
 namespace rad {
@@ -59,6 +62,27 @@ inline void addGeometry(Fingerprint& f, const Scene& scene) {
       f.add(uv.x());
       f.add(uv.y());
     }
+  }
+}
+
+// The lights: their kind, placement, shape and strength, an environment's texels included.
+inline void addLights(Fingerprint& f, const std::vector<Light>& lights) {
+  f.add(lights.size());
+  for (const Light& l : lights) {
+    f.add(static_cast<int>(l.type));
+    for (const Eigen::Vector3d* v : {&l.position, &l.direction, &l.up})
+      for (int k = 0; k < 3; ++k) f.add((*v)[k]);
+    f.add(l.intensity);
+    f.add(l.irradiance);
+    f.add(l.radiance);
+    f.add(l.cosOuter);
+    f.add(l.cosInner);
+    f.add(l.angularDiameterDegrees);
+    f.add(static_cast<int>(l.skyModel));
+    f.add(l.map ? l.map->width() : 0);
+    f.add(l.map ? l.map->height() : 0);
+    if (l.map)
+      for (const Rgb& t : l.map->texels()) f.add(t);
   }
 }
 

@@ -226,14 +226,16 @@ void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
   nlohmann::json lights = nlohmann::json::array();
   for (size_t l = 0; l < kept.lightGroups.size(); ++l)
     lights.push_back({{"type", kept.lightTypes[l]}, {"group", kept.lightGroups[l]}});
-  const std::string header = nlohmann::json{{"scene", kept.scenePath},
-                                            {"fingerprint", kept.fingerprint},
-                                            {"elements", n},
-                                            {"lights", lights},
-                                            {"options", optionsJson(kept.options)},
-                                            {"element_edge", kept.elementEdge},
-                                            {"light_input", lightInputJson(kept.lightInput)}}
-                                 .dump();
+  const std::string header = nlohmann::json{
+      {"scene", kept.scenePath},
+      {"fingerprint", kept.fingerprint},
+      {"elements", n},
+      {"lights", lights},
+      {"options", optionsJson(kept.options)},
+      {"element_edge", kept.elementEdge},
+      {"light_input", lightInputJson(kept.lightInput)},
+      {"lights_fingerprint",
+       kept.lightsFingerprint}}.dump();
   out.write(kMagic, static_cast<std::streamsize>(std::strlen(kMagic)));
   put(out, static_cast<uint64_t>(header.size()));
   out.write(header.data(), static_cast<std::streamsize>(header.size()));
@@ -302,6 +304,7 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
     kept.options = optionsFromJson(header.at("options"), reader);
     kept.elementEdge = header.at("element_edge").get<double>();
     kept.lightInput = lightInputFromJson(header.at("light_input"), reader);
+    kept.lightsFingerprint = header.value("lights_fingerprint", std::string());
   } catch (const nlohmann::json::exception& e) {
     reader.fail(std::string("the header is not the expected JSON: ") + e.what());
   }
@@ -421,6 +424,9 @@ std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster
   report.directLightRays = lightRays;
   rayMultipliers = sourceRayMultipliers(solution.problem.area, sources);
   kept->lightInput = options.lights;
+  Fingerprint lights;
+  addLights(lights, scene.lights);
+  kept->lightsFingerprint = lights.hex();
   kept->rayMultiplier = rayMultipliers;
   for (int e = 0; e < mesh.elementCount(); ++e) {
     kept->corners.push_back(mesh.corners(e));

@@ -34,7 +34,10 @@ struct KeptFactors {
   std::vector<std::string> lightGroups;           // per light: its group (light_groups.h)
   std::vector<std::string> lightTypes;            // per light: lightTypeName
   std::vector<std::vector<Rgb>> lightIrradiance;  // per light, per element: E_d (W·m⁻²)
-  KeptRowTable rows;                              // per element: its hemisphere row
+  // A hash of the lights as solved (addLights): relight refuses lights that moved or changed
+  // since, whose E_d the kept one no longer is. Empty in files kept before it was recorded.
+  std::string lightsFingerprint;
+  KeptRowTable rows;  // per element: its hemisphere row
 
   // For `update` after a geometry edit (incremental.h): what the mesh was, to tell which elements
   // stayed put, and the inputs that must be the same again.
@@ -55,7 +58,8 @@ inline constexpr const char* kKeptFactorsFile = "factors.bin";
 std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& options);
 
 // factors.bin: the line "radiosity kept factors 2", a u64 (little-endian) byte count and that
-// many bytes of JSON (scene, fingerprint, elements, lights, options, element_edge, light_input),
+// many bytes of JSON (scene, fingerprint, elements, lights, options, element_edge, light_input,
+// lights_fingerprint),
 // then little-endian arrays: area (f64 × n); per light, E_d (f64 × 3n); per element its row: u32
 // count c, u8 tinted, f64 escaped, i32 targets[c], f32 values[c], and f32 × 3c tinted values when
 // tinted; then the mesh: corners (f64 × 9n), material (i32 × n), patch (i32 × n), ray multiplier

@@ -8,6 +8,7 @@
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
+#include "radiosity/pipeline/fingerprint.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/mesh_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
@@ -19,8 +20,9 @@
 namespace rad {
 
 Scene loadKeptScene(const KeptFactors& kept) {
-  Scene scene = loadScene(kept.scenePath);
-  scene.lights.clear();
+  Scene scene = loadScene(kept.scenePath);  // with the scene's own lights (glTF), as solved
+  for (Light& light : findSceneLights(kept.scenePath, kept.lightInput, false))
+    scene.lights.push_back(std::move(light));
   applyTwoSidedInput(scene, kept.options.twoSided);
   addBackSides(scene);
   return scene;
@@ -38,6 +40,23 @@ SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene sc
                          " changed since `solve --keep-factors` (its geometry, UVs, cut-outs, "
                          "mirrors or glass, or the mesh options): relight reuses rays that no "
                          "longer fit it; solve again");
+  if (scene.lights.size() != kept.lightIrradiance.size())
+    throw InputError(keptPath, 0,
+                     "the scene has " + std::to_string(scene.lights.size()) +
+                         " light(s) now, the kept solve had " +
+                         std::to_string(kept.lightIrradiance.size()) +
+                         ": relight changes lights' strengths (--override), not their number; "
+                         "solve again");
+  if (!kept.lightsFingerprint.empty()) {
+    Fingerprint lights;
+    addLights(lights, scene.lights);
+    if (lights.hex() != kept.lightsFingerprint)
+      throw InputError(keptPath, 0,
+                       "the lights changed since `solve --keep-factors` (where they are, their "
+                       "shape or strength in the lights file or the --sky/--sun options): relight "
+                       "reuses their first shot; scale their strength with --override, or solve "
+                       "again");
+  }
   SolveResult result;
   Solution& solution = result.solution;
   SolveReport& report = result.report;
@@ -84,6 +103,9 @@ SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene sc
   reportSolver(*solver, report);
   report.shooters = n;
   report.relitFrom = keptPath;
+  report.relitLightScale = lightScale;
+  for (size_t l = 0; l < lightScale.size(); ++l)
+    solution.scene.lights[l] = scaledLight(solution.scene.lights[l], lightScale[l]);
   report.skip("form factors and the lights' first shot",
               "relight: reused from " + keptPath + ", no ray cast");
   report.times.total =

@@ -10,15 +10,18 @@
 
 namespace rad {
 
-// The scene a kept solve was made from, as its file reads now (materials included), with the
-// two-sided surfaces the solve had; no lights (their first shot is kept).
+// The scene a kept solve was made from, as its files read now (materials included), with the
+// two-sided surfaces and the lights (the scene's own, then its light input's) the solve had.
 Scene loadKeptScene(const KeptFactors& kept);
 
 // Solves the kept scene again from its kept factors, casting no ray: the same mesh (uniform
 // meshing is deterministic), ρ and E from `scene`'s materials (the caller's overrides applied),
 // each light's kept E_d times lightScale[l], and the kept rows and exposed areas. `solverOptions`
 // supplies the solver, tolerance, iteration budget and threads. Throws InputError naming
-// `keptPath` when the scene's geometry no longer matches the kept factors. Takes `kept` by value:
+// `keptPath` when the scene's geometry no longer matches the kept factors, or its lights are not
+// the ones solved (their E_d is kept, not cast again). The solution's scene has each light scaled
+// by lightScale[l] (scaledLight), and the report the scales (relitLightScale): what `bake
+// --solution` re-applies to the scene to recognise the relit solution. Takes `kept` by value:
 // the gathering solvers take its rows over (move it in when it is not needed again).
 SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene scene,
                          const std::vector<Rgb>& lightScale, const SolveOptions& solverOptions);

@@ -14,11 +14,86 @@
 #include "radiosity/pipeline/fingerprint.h"
 #include "radiosity/pipeline/mesh_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
+#include "radiosity/scene/lights.h"
 
 namespace rad {
 namespace {
 
 constexpr const char* kFormat = "radiosity saved solution 1";
+
+nlohmann::json rgbJson(const Rgb& c) { return {c.r, c.g, c.b}; }
+
+// relight's overrides, kept in solution.json so that the relit solution is recognised: the scene
+// it belongs to is the scene's files with these applied.
+nlohmann::json relitJson(const SolveReport& report, const Scene& scene) {
+  nlohmann::json materials = nlohmann::json::array();
+  for (const auto& [index, change] : report.relitMaterials) {
+    nlohmann::json m = {{"index", index}, {"name", scene.materials[index].name}};
+    if (change.diffuse) m["diffuse"] = rgbJson(*change.diffuse);
+    if (change.emission) m["emission"] = rgbJson(*change.emission);
+    materials.push_back(m);
+  }
+  nlohmann::json scales = nlohmann::json::array();
+  for (const Rgb& s : report.relitLightScale) scales.push_back(rgbJson(s));
+  return {{"kept_factors", report.relitFrom},
+          {"materials", materials},
+          {"light_scale", scales},
+          {"comment",
+           "relight's overrides: the scene files with these applied are the scene this solution "
+           "is for"}};
+}
+
+// `scene` with a relit entry's overrides applied; nothing (and `whyNot`) when they name
+// materials or lights the scene does not have. InputError naming the file and the JSON pointer
+// when the entry is malformed.
+std::optional<Scene> relitScene(const nlohmann::json& relit, const Scene& scene,
+                                const std::string& jsonPath, std::string& whyNot) {
+  auto fail = [&](const std::string& pointer, const std::string& what) {
+    throw InputError(jsonPath, 0, "/relit" + pointer + ": " + what);
+  };
+  auto rgbAt = [&](const nlohmann::json& j, const std::string& pointer) {
+    if (!j.is_array() || j.size() != 3) fail(pointer, "expected [r, g, b]");
+    Rgb c;
+    for (int k = 0; k < 3; ++k) {
+      if (!j[k].is_number()) fail(pointer + "/" + std::to_string(k), "expected a number");
+      c[k] = j[k].get<double>();
+    }
+    if (!c.isFinite() || c.minComponent() < 0) fail(pointer, "expected finite values >= 0");
+    return c;
+  };
+  if (!relit.is_object()) fail("", "expected an object");
+  const auto materials = relit.find("materials");
+  const auto scales = relit.find("light_scale");
+  if (materials == relit.end() || !materials->is_array()) fail("/materials", "expected an array");
+  if (scales == relit.end() || !scales->is_array()) fail("/light_scale", "expected an array");
+  Scene changed = scene;
+  for (size_t i = 0; i < materials->size(); ++i) {
+    const nlohmann::json& m = (*materials)[i];
+    const std::string at = "/materials/" + std::to_string(i);
+    if (!m.is_object() || !m.contains("index") || !m["index"].is_number_integer() ||
+        !m.contains("name") || !m["name"].is_string())
+      fail(at, "expected {\"index\": i, \"name\": \"...\", ...}");
+    const auto index = m["index"].get<int64_t>();
+    if (index < 0 || index >= static_cast<int64_t>(changed.materials.size()) ||
+        changed.materials[static_cast<size_t>(index)].name != m["name"].get<std::string>()) {
+      whyNot = "the saved solution was relit with a material the scene does not have (" +
+               m["name"].get<std::string>() + ")";
+      return std::nullopt;
+    }
+    Material& material = changed.materials[static_cast<size_t>(index)];
+    if (m.contains("diffuse")) material.diffuse = rgbAt(m["diffuse"], at + "/diffuse");
+    if (m.contains("emission")) material.emission = rgbAt(m["emission"], at + "/emission");
+  }
+  if (scales->size() != changed.lights.size()) {
+    whyNot = "the saved solution was relit for " + std::to_string(scales->size()) +
+             " light(s), the scene has " + std::to_string(changed.lights.size());
+    return std::nullopt;
+  }
+  for (size_t l = 0; l < scales->size(); ++l)
+    changed.lights[l] =
+        scaledLight(changed.lights[l], rgbAt((*scales)[l], "/light_scale/" + std::to_string(l)));
+  return changed;
+}
 
 }  // namespace
 
@@ -44,23 +119,7 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
     f.add(t.height);
     for (float v : t.rgba) f.add(v);
   }
-  f.add(scene.lights.size());
-  for (const Light& l : scene.lights) {
-    f.add(static_cast<int>(l.type));
-    for (const Eigen::Vector3d* v : {&l.position, &l.direction, &l.up})
-      for (int k = 0; k < 3; ++k) f.add((*v)[k]);
-    f.add(l.intensity);
-    f.add(l.irradiance);
-    f.add(l.radiance);
-    f.add(l.cosOuter);
-    f.add(l.cosInner);
-    f.add(l.angularDiameterDegrees);
-    f.add(static_cast<int>(l.skyModel));
-    f.add(l.map ? l.map->width() : 0);
-    f.add(l.map ? l.map->height() : 0);
-    if (l.map)
-      for (const Rgb& t : l.map->texels()) f.add(t);
-  }
+  addLights(f, scene.lights);
   f.add(static_cast<int>(o.solver));
   f.add(o.raysPerElement);
   f.add(o.maxArea);
@@ -110,7 +169,14 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
     throw InputError(jsonPath, 0,
                      std::string("not a saved solution (expected \"format\": \"") + kFormat +
                          "\" and a \"fingerprint\"); delete it to solve again");
-  if (meta["fingerprint"].get<std::string>() != solutionFingerprint(scene, options)) {
+  // A relit solution (radiosity relight) is for the scene with relight's overrides applied.
+  std::optional<Scene> relit;
+  if (meta.contains("relit")) {
+    relit = relitScene(meta["relit"], scene, jsonPath, whyNot);
+    if (!relit) return std::nullopt;
+  }
+  const Scene& solved = relit ? *relit : scene;
+  if (meta["fingerprint"].get<std::string>() != solutionFingerprint(solved, options)) {
     whyNot = "the saved solution was made from another scene or other solve options";
     return std::nullopt;
   }
@@ -120,7 +186,7 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   const std::string csvPath = (base / csvName).string();
 
   SolveResult result;
-  MeshedScene meshed = meshScene(scene, options);
+  MeshedScene meshed = meshScene(solved, options);
   result.solution.mesh = std::move(meshed.mesh);
   const PatchMesh& mesh = *result.solution.mesh;
   const int count = mesh.elementCount();
@@ -152,11 +218,11 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
     throw InputError(csvPath, lineNumber,
                      "the saved solution has " + std::to_string(element) +
                          " elements, the re-meshed scene " + std::to_string(count));
-  result.solution.scene = scene;
+  result.solution.scene = relit ? std::move(*relit) : scene;
   // The exposed areas the solve had: the outputs weigh vertex values by them.
   const RayCaster rays(mesh, result.solution.scene);
   const ElementExposure exposure = solveExposure(options, mesh, rays);
-  result.solution.problem = makeProblem(scene, mesh, &exposure);
+  result.solution.problem = makeProblem(result.solution.scene, mesh, &exposure);
   result.report.solverName = meta.value("solver", std::string("saved")) + " (reused)";
   result.report.converged = meta.value("converged", false);
   result.report.maxArea = meshed.maxArea;
@@ -174,7 +240,7 @@ void writeSavedSolution(AtomicFile& csv, AtomicFile& json, const SolveResult& re
 
 void writeSavedSolutionJson(AtomicFile& json, const std::string& elementsFile,
                             const SolveResult& result, const SolveOptions& options) {
-  const nlohmann::json meta = {
+  nlohmann::json meta = {
       {"format", kFormat},
       {"fingerprint", solutionFingerprint(result.solution.scene, options)},
       {"scene", options.scenePath},
@@ -187,6 +253,8 @@ void writeSavedSolutionJson(AtomicFile& json, const std::string& elementsFile,
                       " (W/m^2); render, bake and view with --solution on this directory (or "
                       "--out, for render) reuse it for the same scene and solve options"},
   };
+  if (!result.report.relitFrom.empty())
+    meta["relit"] = relitJson(result.report, result.solution.scene);
   json.stream() << meta.dump(2) << "\n";
 }
 

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "radiosity/hierarchical/element_links.h"
 #include "radiosity/scene/light_groups.h"
 #include "radiosity/scene/scene.h"
+#include "radiosity/scene/scene_overrides.h"
 #include "radiosity/solvers/radiosity_problem.h"
 
 namespace rad {
@@ -84,6 +86,9 @@ struct SolveReport {
   int threads = 0;
   bool reusedSavedSolution = false;
   std::string relitFrom;  // relight: the kept factors the solve reused (no ray cast)
+  // relight's overrides: the materials changed (by index) and each light's scale.
+  std::map<int, MaterialOverride> relitMaterials;
+  std::vector<Rgb> relitLightScale;
   // update (incremental_update.h): the kept factors it started from and what the edit changed.
   struct Update {
     std::string keptFactors;   // empty: not an update

@@ -314,6 +314,20 @@ Light environmentLight(int width, int height, std::vector<Rgb> radiance,
   return light;
 }
 
+Light scaledLight(const Light& light, const Rgb& scale) {
+  Light scaled = light;
+  scaled.intensity = light.intensity * scale;
+  scaled.irradiance = light.irradiance * scale;
+  scaled.radiance = light.radiance * scale;
+  if (light.map) {
+    std::vector<Rgb> texels = light.map->texels();
+    for (Rgb& t : texels) t = t * scale;
+    scaled.map = std::make_shared<EnvironmentMap>(light.map->width(), light.map->height(),
+                                                  std::move(texels), light.map->up());
+  }
+  return scaled;
+}
+
 std::vector<Light> findSceneLights(const std::string& scenePath, const LightInput& input,
                                    bool log) {
   std::vector<Light> lights;

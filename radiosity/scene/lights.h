@@ -67,6 +67,10 @@ Light cieClearSky(const Rgb& zenithRadiance, const Eigen::Vector3d& sunTravel,
 Light environmentLight(int width, int height, std::vector<Rgb> radiance,
                        const Eigen::Vector3d& up = {0, 1, 0});
 
+// `light` with its strength multiplied by `scale` per channel (relight's light overrides): the
+// intensity, irradiance or radiance, and an environment's or clear sky's texels.
+Light scaledLight(const Light& light, const Rgb& scale);
+
 // Where a scene's lights come from: a lights file (`file`; when empty, the sidecar beside the
 // scene if it exists) plus the command line's shortcuts.
 struct LightInput {

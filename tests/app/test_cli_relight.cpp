@@ -3,12 +3,15 @@
 // (a wrong override, no kept factors, a scene that changed) refused with the old outputs intact.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
+#include "radiosity/output/image_io.h"
 #include "tests/support/run_command.h"
 
 namespace rad {
@@ -92,6 +95,90 @@ TEST(CliRelight, MatchesASolveOfTheChangedSceneAndCastsNoRay) {
     for (double v : a) peak = std::max(peak, v);
     for (size_t i = 0; i < a.size(); ++i) ASSERT_NEAR(b[i], a[i], 1e-5 * peak) << solver << i;
   }
+  fs::remove_all(root);
+}
+
+// The Cornell box's two lamps (data/cornell_box/two_lamps.lights.json), their intensities scaled
+// per channel: the spot (group "lamp") by `spot`, the point light by `point`.
+fs::path writeLamps(const fs::path& path, const std::string& spot, const std::string& point) {
+  std::ofstream(path) << R"({"lights": [
+    {"type": "spot", "position": [0.15, 0.5, 0.45], "direction": [0.1, -1, -0.1],
+     "intensity": )" << spot
+                      << R"(, "cone_degrees": 35, "inner_cone_degrees": 25, "group": "lamp"},
+    {"type": "point", "position": [0.45, 0.45, 0.1], "intensity": )"
+                      << point << "}]}";
+  return path;
+}
+
+std::vector<double> lightmap(const fs::path& dir) {
+  std::vector<double> channels;
+  for (const Rgb& p : readExr((dir / "lightmap.exr").string()).pixels)
+    channels.insert(channels.end(), {p.r, p.g, p.b});
+  return channels;
+}
+
+// `bake --solution` on a relit directory bakes the relit solution: the scene's files with the
+// override applied (solution.json keeps it), as a bake of a scene with the change made would.
+TEST(CliRelight, BakeOfTheRelitSolutionIsTheBakeOfTheChangedScene) {
+  const fs::path root = scratchPath("relight_bake");
+  const fs::path scene = copyCornell(root / "scene");
+  const fs::path lamps = writeLamps(root / "lamps.json", "[0.05, 0.15, 0.3]", "[0.3, 0.18, 0.06]");
+  const std::string options = kSolveOptions + " --solver gauss-seidel";
+  const fs::path kept = root / "kept";
+  ASSERT_EQ(runRadiosity("solve " + scene.string() + " --lights " + lamps.string() + " --out " +
+                         kept.string() + " --keep-factors" + options)
+                .exitCode,
+            0);
+  std::ofstream(root / "over.json") << R"({"materials": {"red": {"diffuse": [0.1, 0.2, 0.6]}},
+    "lights": {"lamp": {"scale": 3}, "1": {"scale": [1, 0.5, 0.25]}}})";
+  const fs::path relit = root / "relit";
+  auto r =
+      runRadiosity("relight " + kept.string() + " --override " + (root / "over.json").string() +
+                   " --out " + relit.string() + " --solver gauss-seidel --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  auto bake = [&](const fs::path& obj, const fs::path& lights, const fs::path& solution,
+                  const fs::path& out) {
+    const auto b =
+        runRadiosity("bake " + obj.string() + " --lights " + lights.string() + " --solution " +
+                     solution.string() + " --out " + out.string() + options);
+    EXPECT_EQ(b.exitCode, 0) << b.stderrText;
+    EXPECT_TRUE(nlohmann::json::parse(readText(out / "bake.json"))["reused_saved_solution"]);
+    return lightmap(out);
+  };
+  const std::vector<double> relitMap = bake(scene, lamps, relit, root / "baked_relit");
+  const std::vector<double> keptMap = bake(scene, lamps, kept, root / "baked_kept");
+  // The change made in the files and solved afresh (the same rows: the same rays).
+  const fs::path changed = copyCornell(root / "changed", "0.1 0.2 0.6");
+  const fs::path changedLamps =
+      writeLamps(root / "changed_lamps.json", "[0.15, 0.45, 0.9]", "[0.3, 0.09, 0.015]");
+  const fs::path fresh = root / "fresh";
+  ASSERT_EQ(runRadiosity("solve " + changed.string() + " --lights " + changedLamps.string() +
+                         " --out " + fresh.string() + " --keep-factors" + options)
+                .exitCode,
+            0);
+  const std::vector<double> freshMap = bake(changed, changedLamps, fresh, root / "baked_fresh");
+  ASSERT_EQ(relitMap.size(), freshMap.size());
+  ASSERT_EQ(keptMap.size(), freshMap.size());
+  ASSERT_FALSE(freshMap.empty());
+  const double peak = *std::max_element(freshMap.begin(), freshMap.end());
+  double changedMost = 0;
+  for (size_t i = 0; i < freshMap.size(); ++i) {
+    // The factors are kept as floats (6e-8 relative): the solutions agree to 1e-5 of the peak.
+    ASSERT_NEAR(relitMap[i], freshMap[i], 1e-5 * peak) << "texel channel " << i;
+    changedMost = std::max(changedMost, std::abs(relitMap[i] - keptMap[i]));
+  }
+  EXPECT_GT(changedMost, 0.05 * peak);
+
+  // A relit solution.json whose overrides were edited into nonsense: the file and the pointer.
+  std::string json = readText(relit / "solution.json");
+  json.replace(json.find("\"light_scale\""), 13, "\"light_scale\": 7, \"x\"");
+  std::ofstream(relit / "solution.json") << json;
+  r = runRadiosity("bake " + scene.string() + " --lights " + lamps.string() + " --solution " +
+                   relit.string() + " --out " + (root / "bad").string() + options);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("solution.json"), std::string::npos) << r.stderrText;
+  EXPECT_NE(r.stderrText.find("/relit/light_scale"), std::string::npos) << r.stderrText;
+  EXPECT_FALSE(fs::exists(root / "bad"));
   fs::remove_all(root);
 }
 

@@ -66,6 +66,7 @@ KeptFactors sample() {
   k.rows = KeptRowTable(sampleRows());
   k.elementEdge = 0.125;
   k.lightInput.file = "lamps.lights.json";
+  k.lightsFingerprint = "1f2e3d4c5b6a7980";
   k.lightInput.shortcuts = {skyLight({0.3, 0.4, 0.5}), sunLight({0.3, -1, 0.25}, {8, 7, 6})};
   for (int e = 0; e < 4; ++e) {
     k.corners.push_back(
@@ -225,6 +226,7 @@ TEST_F(KeptFactorsTest, RoundTripKeepsEveryField) {
   EXPECT_EQ(out.patch, in.patch);
   EXPECT_EQ(out.rayMultiplier, in.rayMultiplier);
   EXPECT_EQ(out.lightInput.file, in.lightInput.file);
+  EXPECT_EQ(out.lightsFingerprint, in.lightsFingerprint);
   ASSERT_EQ(out.lightInput.shortcuts.size(), 2u);
   EXPECT_EQ(out.lightInput.shortcuts[0].type, LightType::Sky);
   EXPECT_EQ(out.lightInput.shortcuts[0].radiance.g, 0.4);

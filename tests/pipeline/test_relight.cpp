@@ -83,6 +83,14 @@ const Kept& keptCornell() {
   return kept;
 }
 
+// The kept scene as relight loads it: the lamps were given in memory, not by a lights file.
+Scene keptScene(const KeptFactors& kept) {
+  Scene scene = loadKeptScene(kept);
+  EXPECT_TRUE(scene.lights.empty());
+  scene.lights = lamps();
+  return scene;
+}
+
 TEST(Relight, EqualsAFreshSolveOfTheChangedSceneAndCastsNoRay) {
   const Kept& kept = keptCornell();
   ASSERT_EQ(kept.factors.rows.size(), kept.factors.area.size());
@@ -94,7 +102,7 @@ TEST(Relight, EqualsAFreshSolveOfTheChangedSceneAndCastsNoRay) {
   changed.lights = lamps(kSpot, kPoint);
   const SolveResult fresh = solveScene(std::move(changed), keepOptions());
 
-  Scene relitScene = loadKeptScene(kept.factors);
+  Scene relitScene = keptScene(kept.factors);
   changeMaterials(relitScene);
   const SolveResult relit =
       relightScene(kept.factors, "kept", std::move(relitScene), {kSpot, kPoint}, keepOptions());
@@ -129,9 +137,8 @@ TEST(Relight, FromTheFileEqualsFromMemoryToTheFactorsFloatRounding) {
   std::filesystem::remove(file);
   const std::vector<Rgb> scales{Rgb::all(1), Rgb::all(1)};
   const SolveResult fromMemory =
-      relightScene(kept.factors, "kept", loadKeptScene(kept.factors), scales, keepOptions());
-  const SolveResult fromFile =
-      relightScene(read, "kept", loadKeptScene(read), scales, keepOptions());
+      relightScene(kept.factors, "kept", keptScene(kept.factors), scales, keepOptions());
+  const SolveResult fromFile = relightScene(read, "kept", keptScene(read), scales, keepOptions());
   // Unchanged inputs: the kept solve's own answer back. The file holds the factors as floats
   // (relative rounding 6e-8), which moves B by about that much.
   const double scale = peak(kept.solve.solution.radiosity);
@@ -146,15 +153,42 @@ TEST(Relight, FromTheFileEqualsFromMemoryToTheFactorsFloatRounding) {
 
 TEST(Relight, RefusesAChangedGeometryAndAnEmptyScene) {
   const Kept& kept = keptCornell();
-  Scene moved = loadKeptScene(kept.factors);
+  Scene moved = keptScene(kept.factors);
   moved.positions[0].x() += 0.01;
   EXPECT_THROW(relightScene(kept.factors, "kept", std::move(moved), {Rgb::all(1), Rgb::all(1)},
                             keepOptions()),
                InputError);
-  Scene dark = loadKeptScene(kept.factors);
+  Scene dark = keptScene(kept.factors);
   for (Material& m : dark.materials) m.emission = Rgb();
   EXPECT_THROW(relightScene(kept.factors, "kept", std::move(dark), {Rgb(), Rgb()}, keepOptions()),
                InputError);
+}
+
+// The lights' first shot is kept, not cast again: lights that moved, or whose strength changed in
+// the scene's files rather than by an override's scale, or a different number of them, no longer
+// fit it.
+TEST(Relight, RefusesLightsThatChangedSinceTheSolve) {
+  const Kept& kept = keptCornell();
+  const std::vector<Rgb> scales{Rgb::all(1), Rgb::all(1)};
+  Scene moved = keptScene(kept.factors);
+  moved.lights[1].position.x() += 0.01;
+  EXPECT_THROW(relightScene(kept.factors, "kept", std::move(moved), scales, keepOptions()),
+               InputError);
+  Scene brighter = keptScene(kept.factors);
+  brighter.lights[0].intensity = brighter.lights[0].intensity * 2;
+  EXPECT_THROW(relightScene(kept.factors, "kept", std::move(brighter), scales, keepOptions()),
+               InputError);
+  Scene fewer = keptScene(kept.factors);
+  fewer.lights.pop_back();
+  EXPECT_THROW(relightScene(kept.factors, "kept", std::move(fewer), scales, keepOptions()),
+               InputError);
+  // The same lights scaled by the override: accepted, and the relit scene's lights are scaled.
+  const SolveResult relit =
+      relightScene(kept.factors, "kept", keptScene(kept.factors), {kSpot, kPoint}, keepOptions());
+  const std::vector<Light> expected = lamps(kSpot, kPoint);
+  for (size_t l = 0; l < expected.size(); ++l)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_DOUBLE_EQ(relit.solution.scene.lights[l].intensity[c], expected[l].intensity[c]);
 }
 
 TEST(Relight, KeepFactorsNeedsHemisphereRowsOnAUniformMesh) {

@@ -295,3 +295,36 @@ TEST(JsonPointerLine, FindsMembersAndElementsOnTheirLines) {
 
 }  // namespace
 }  // namespace rad
+
+namespace rad {
+namespace {
+
+void expectRgb(const Rgb& actual, const Rgb& expected) {
+  for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(actual[c], expected[c]) << "channel " << c;
+}
+
+// relight's light scale: every strength a light has is multiplied, per channel, and nothing else
+// changes — a clear sky's table too, which its sampling and the renders read.
+TEST(Lights, ScaledLightMultipliesEveryStrengthPerChannel) {
+  const Rgb k{2, 0.5, 0};
+  Light spot;
+  spot.type = LightType::Spot;
+  spot.intensity = {0.1, 0.2, 0.3};
+  spot.cosOuter = 0.5;
+  const Light scaledSpot = scaledLight(spot, k);
+  expectRgb(scaledSpot.intensity, {0.2, 0.1, 0});
+  EXPECT_EQ(scaledSpot.cosOuter, 0.5);
+  expectRgb(scaledLight(sunLight({0.3, -1, 0.25}, {8, 7.6, 6.8}), k).irradiance, {16, 3.8, 0});
+  const Light sky = cieClearSky({1, 2, 3}, Eigen::Vector3d(0.3, -1, 0.25).normalized());
+  const Rgb before = sky.map->texels()[0];
+  const Light scaledSky = scaledLight(sky, k);
+  expectRgb(scaledSky.radiance, {2, 1, 0});
+  ASSERT_TRUE(scaledSky.map);
+  ASSERT_EQ(scaledSky.map->texels().size(), sky.map->texels().size());
+  for (size_t i = 0; i < sky.map->texels().size(); ++i)
+    expectRgb(scaledSky.map->texels()[i], sky.map->texels()[i] * k);
+  expectRgb(sky.map->texels()[0], before);  // the original is left as it was
+}
+
+}  // namespace
+}  // namespace rad
