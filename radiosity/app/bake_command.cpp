@@ -287,14 +287,21 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     // behind a one-sided lamp), as the solve finds them: their texels hold no arriving light, not
     // the interpolated light of the element's exposed part (measured on the Cornell box: 3.3% of
     // the texels, which made the interpolated lightmap 1.55% brighter than Cycles' bake).
-    auto caster = std::make_unique<const RayCaster>(mesh, solution.scene);
-    const ElementExposure exposure = solveExposure(o.solve, mesh, *caster);
+    // The BVH only where rays are cast: the buried parts when the solve did not keep them, the
+    // gather, the directional pages.
+    std::unique_ptr<const RayCaster> caster;
+    auto rays = [&]() -> const RayCaster& {
+      if (!caster) caster = std::make_unique<const RayCaster>(mesh, solution.scene);
+      return *caster;
+    };
+    const ElementExposure exposure =
+        solution.exposure ? *solution.exposure : solveExposure(o.solve, mesh, rays());
     std::unique_ptr<const RenderScene> view;
     std::unique_ptr<const FinalGather> gather;
     std::vector<std::vector<Rgb>> gatherError;  // per page and texel: the gather's standard error
     const bool textured = irradiance || !solution.scene.textures.empty();
     if (o.gather > 0) {
-      view = std::make_unique<const RenderScene>(solution.scene, mesh, *caster);
+      view = std::make_unique<const RenderScene>(solution.scene, mesh, rays());
       gather = std::make_unique<const FinalGather>(*view, solution.radiosity,
                                                    FinalGatherOptions{o.gather, o.lightRays});
       gatherError.assign(layout.pages,
@@ -435,7 +442,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       // (render/directional_lightmap).
       t = std::chrono::steady_clock::now();
       if (!view) {
-        view = std::make_unique<const RenderScene>(solution.scene, mesh, *caster);
+        view = std::make_unique<const RenderScene>(solution.scene, mesh, rays());
       }
       nlohmann::json names = nlohmann::json::array();
       for (int page = 0; page < layout.pages; ++page) {

@@ -221,8 +221,9 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   result.solution.scene = relit ? std::move(*relit) : scene;
   // The exposed areas the solve had: the outputs weigh vertex values by them.
   const RayCaster rays(mesh, result.solution.scene);
-  const ElementExposure exposure = solveExposure(options, mesh, rays);
-  result.solution.problem = makeProblem(result.solution.scene, mesh, &exposure);
+  auto exposure = std::make_shared<const ElementExposure>(solveExposure(options, mesh, rays));
+  result.solution.problem = makeProblem(result.solution.scene, mesh, exposure.get());
+  result.solution.exposure = std::move(exposure);
   result.report.solverName = meta.value("solver", std::string("saved")) + " (reused)";
   result.report.converged = meta.value("converged", false);
   result.report.maxArea = meshed.maxArea;

@@ -14,6 +14,7 @@
 #include "radiosity/scene/scene.h"
 #include "radiosity/scene/scene_overrides.h"
 #include "radiosity/solvers/radiosity_problem.h"
+#include "radiosity/visibility/element_exposure.h"
 
 namespace rad {
 
@@ -45,6 +46,9 @@ struct Solution {
   // With keepLinks and --solver hierarchical: the links each element gathers over, for the
   // viewer. Null otherwise.
   std::shared_ptr<const ElementLinks> links;
+  // The parts of elements no ray reaches (solveExposure), as the solve found them on `mesh`, for
+  // the bake's buried texels; null when the mesh changed since (refinement) or nobody kept it.
+  std::shared_ptr<const ElementExposure> exposure;
 };
 
 // Why the iterations stopped.

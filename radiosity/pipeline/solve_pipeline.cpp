@@ -138,9 +138,13 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   t = Clock::now();
   const RayCaster rays(*solution.mesh, solution.scene);
   report.times.bvh = secondsSince(t);
-  const ElementExposure exposure = solveExposure(options, *solution.mesh, rays);
+  auto keptExposure =
+      std::make_shared<const ElementExposure>(solveExposure(options, *solution.mesh, rays));
+  const ElementExposure& exposure = *keptExposure;
   noteBuriedParts(exposure, *solution.mesh, report);
   solution.problem = makeProblem(solution.scene, *solution.mesh, &exposure);
+  // For the bake's buried texels, unless refinement changes the mesh.
+  if (!(options.refineThreshold > 0)) solution.exposure = keptExposure;
   report.elementsBeforeRefinement = solution.mesh->elementCount();
   const IterationLimits limits = iterationLimits(options, solution.mesh->elementCount(), start);
   if (options.lightGroups) {
