@@ -41,24 +41,20 @@ void runRelight(const RelightOptions& o) {
     throw InputError(o.dir, 0,
                      "no kept form factors (" + std::string(kKeptFactorsFile) +
                          ") here: solve with --keep-factors --out " + o.dir + " first");
-  // The scene loads from the header's path while the rows are read (most of a large relight's
-  // reading time): the two overlap.
+  // The scene loads from the header's path, and is checked and meshed, while the rows are read
+  // (most of a large relight's time): the two overlap.
   const auto t = std::chrono::steady_clock::now();
   const KeptFactors header = readKeptFactors(keptPath, KeptParts::Header);
   std::future<KeptFactors> reading =
       std::async(std::launch::async, [&keptPath] { return readKeptFactors(keptPath); });
   Scene scene = loadKeptScene(header);
-  KeptFactors kept = reading.get();
-  logInfo("read " + keptPath + " (" + std::to_string(kept.rows.size()) + " rows, " +
-          std::to_string(kept.rows.factorCount()) + " factors) and the scene in " +
-          formatNumber(secondsSince(t)) + " s");
-  std::vector<Rgb> lightScale(kept.lightIrradiance.size(), Rgb::all(1));
+  std::vector<Rgb> lightScale(header.lightTypes.size(), Rgb::all(1));
   std::map<int, MaterialOverride> materialChanges;
   if (!o.overrideFile.empty()) {
     std::vector<std::string> materialNames;
     for (const Material& m : scene.materials) materialNames.push_back(m.name);
     const SceneOverrides overrides =
-        loadSceneOverrides(o.overrideFile, materialNames, kept.lightGroups);
+        loadSceneOverrides(o.overrideFile, materialNames, header.lightGroups);
     for (const auto& [index, change] : overrides.materials) {
       Material& m = scene.materials[static_cast<size_t>(index)];
       if (change.diffuse) m.diffuse = *change.diffuse;
@@ -73,8 +69,13 @@ void runRelight(const RelightOptions& o) {
   if (o.maxIterations) solver.maxIterations = *o.maxIterations;
   solver.threads = o.threads;
   solver.outputDir = o.outputDir.empty() ? o.dir : o.outputDir;
-  SolveResult result =
-      relightScene(std::move(kept), keptPath, std::move(scene), lightScale, solver);
+  // The checks and the mesh while the rows are still being read.
+  RelightStart started = startRelight(header, keptPath, std::move(scene), solver);
+  KeptFactors kept = reading.get();
+  logInfo("read " + keptPath + " (" + std::to_string(kept.rows.size()) + " rows, " +
+          std::to_string(kept.rows.factorCount()) + " factors), the scene and its mesh in " +
+          formatNumber(secondsSince(t)) + " s");
+  SolveResult result = finishRelight(std::move(started), std::move(kept), keptPath, lightScale);
   result.report.relitMaterials = std::move(materialChanges);  // for solution.json
   throwIfInterrupted();
   SolveOptions written = header.options;

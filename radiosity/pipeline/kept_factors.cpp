@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <future>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <type_traits>
@@ -331,6 +332,9 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
   if (n > reader.left() / 13) reader.fail("cut short in the rows");
   // Each factor takes at least 8 bytes: what is left bounds the factors to reserve.
   kept.rows.reserve(n, reader.left() / 8);
+  // The fresh pages are cleared on a second thread while this one reads into them.
+  std::future<void> populating =
+      std::async(std::launch::async, [&rows = kept.rows] { rows.populateReserved(); });
   std::vector<int32_t> targets;
   std::vector<float> values, tinted;
   for (size_t i = 0; i < n; ++i) {

@@ -39,6 +39,12 @@ void KeptRowTable::reserve(size_t rows, size_t maxFactors) {
   reservedRows_ = rows;
 }
 
+void KeptRowTable::populateReserved() {
+  const auto factors = static_cast<size_t>(f_.data().allocatedSize());
+  populatePages(f_.valuePtr(), factors * sizeof(double));
+  populatePages(f_.innerIndexPtr(), factors * sizeof(int));
+}
+
 void KeptRowTable::appendRow(const int32_t* targets, const float* values, size_t count,
                              double escaped, std::vector<Rgb> tinted) {
   RAD_CHECK(size() < reservedRows_);

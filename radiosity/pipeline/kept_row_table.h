@@ -40,6 +40,8 @@ class KeptRowTable {
   // For a reader that knows the row count and a bound on the factors before the rows: appends
   // in row order. `tinted` is empty or holds one factor per target.
   void reserve(size_t rows, size_t maxFactors);
+  // Faults in the reserved factor arrays (populatePages), from a thread beside the one appending.
+  void populateReserved();
   void appendRow(const int32_t* targets, const float* values, size_t count, double escaped,
                  std::vector<Rgb> tinted);
 

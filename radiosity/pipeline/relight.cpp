@@ -28,38 +28,38 @@ Scene loadKeptScene(const KeptFactors& kept) {
   return scene;
 }
 
-SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene scene,
-                         const std::vector<Rgb>& lightScale, const SolveOptions& solverOptions) {
-  RAD_CHECK_EQ(lightScale.size(), kept.lightIrradiance.size());
-  const auto start = std::chrono::steady_clock::now();
-  const SolveOptions options = withSolverOf(kept.options, solverOptions);
+RelightStart startRelight(const KeptFactors& header, const std::string& keptPath, Scene scene,
+                          const SolveOptions& solverOptions) {
+  RelightStart started;
+  started.start = std::chrono::steady_clock::now();
+  started.options = withSolverOf(header.options, solverOptions);
+  const SolveOptions& options = started.options;
   validateSolveOptions(options);
-  if (keptFactorsFingerprint(scene, kept.options) != kept.fingerprint)
+  if (keptFactorsFingerprint(scene, header.options) != header.fingerprint)
     throw InputError(keptPath, 0,
-                     "the scene " + kept.scenePath +
+                     "the scene " + header.scenePath +
                          " changed since `solve --keep-factors` (its geometry, UVs, cut-outs, "
                          "mirrors or glass, or the mesh options): relight reuses rays that no "
                          "longer fit it; solve again");
-  if (scene.lights.size() != kept.lightIrradiance.size())
+  if (scene.lights.size() != header.lightTypes.size())
     throw InputError(keptPath, 0,
                      "the scene has " + std::to_string(scene.lights.size()) +
                          " light(s) now, the kept solve had " +
-                         std::to_string(kept.lightIrradiance.size()) +
+                         std::to_string(header.lightTypes.size()) +
                          ": relight changes lights' strengths (--override), not their number; "
                          "solve again");
-  if (!kept.lightsFingerprint.empty()) {
+  if (!header.lightsFingerprint.empty()) {
     Fingerprint lights;
     addLights(lights, scene.lights);
-    if (lights.hex() != kept.lightsFingerprint)
+    if (lights.hex() != header.lightsFingerprint)
       throw InputError(keptPath, 0,
                        "the lights changed since `solve --keep-factors` (where they are, their "
                        "shape or strength in the lights file or the --sky/--sun options): relight "
                        "reuses their first shot; scale their strength with --override, or solve "
                        "again");
   }
-  SolveResult result;
-  Solution& solution = result.solution;
-  SolveReport& report = result.report;
+  Solution& solution = started.result.solution;
+  SolveReport& report = started.result.report;
   report.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
                                         static_cast<size_t>(report.threads));
@@ -69,20 +69,33 @@ SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene sc
   report.maxArea = meshed.maxArea;
   report.elementSize = meshed.sizing.edge;
   report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
+  report.elementsBeforeRefinement = solution.mesh->elementCount();
+  logInfo(
+      "mesh: " + std::to_string(solution.mesh->elementCount()) + " elements in " +
+      formatNumber(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started.start).count()) +
+      " s");
+  // E and ρ from the materials as they are now (the lights' first shot is added from the kept
+  // E_d when the rows are in).
+  solution.problem = makeProblem(solution.scene, *solution.mesh, nullptr);
+  return started;
+}
+
+SolveResult finishRelight(RelightStart started, KeptFactors kept, const std::string& keptPath,
+                          const std::vector<Rgb>& lightScale) {
+  RAD_CHECK_EQ(lightScale.size(), kept.lightIrradiance.size());
+  const SolveOptions& options = started.options;
+  SolveResult result = std::move(started.result);
+  Solution& solution = result.solution;
+  SolveReport& report = result.report;
+  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
+                                        static_cast<size_t>(report.threads));
   const int n = solution.mesh->elementCount();
   if (n != static_cast<int>(kept.area.size()))
     throw InputError(keptPath, 0,
                      "the scene meshes into " + std::to_string(n) +
                          " elements, the kept factors hold " + std::to_string(kept.area.size()) +
                          ": solve again");
-  report.elementsBeforeRefinement = n;
-  logInfo("mesh: " + std::to_string(n) + " elements in " +
-          formatNumber(
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()) +
-          " s");
-
-  // E and ρ from the materials as they are now; the lights' first shot from the kept E_d.
-  solution.problem = makeProblem(solution.scene, *solution.mesh, nullptr);
   solution.problem.area = kept.area;
   for (size_t l = 0; l < kept.lightIrradiance.size(); ++l)
     for (int e = 0; e < n; ++e)
@@ -94,7 +107,7 @@ SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene sc
   KeptRows rows(kept);
   const std::unique_ptr<Solver> solver =
       makeSolver(options.solver, solution.problem, rows, [&] { return kept.rows.takeMatrix(); });
-  const IterationLimits limits = iterationLimits(options, n, start);
+  const IterationLimits limits = iterationLimits(options, n, started.start);
   report.stoppedBy = iterate(*solver, limits);
   report.converged = converged(report.stoppedBy);
   solution.radiosity = solver->solution();
@@ -109,9 +122,15 @@ SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene sc
   report.skip("form factors and the lights' first shot",
               "relight: reused from " + keptPath + ", no ray cast");
   report.times.total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started.start).count();
   report.times.solve = report.times.total;
   return result;
+}
+
+SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene scene,
+                         const std::vector<Rgb>& lightScale, const SolveOptions& solverOptions) {
+  RelightStart started = startRelight(kept, keptPath, std::move(scene), solverOptions);
+  return finishRelight(std::move(started), std::move(kept), keptPath, lightScale);
 }
 
 }  // namespace rad

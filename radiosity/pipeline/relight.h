@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -25,5 +26,18 @@ Scene loadKeptScene(const KeptFactors& kept);
 // the gathering solvers take its rows over (move it in when it is not needed again).
 SolveResult relightScene(KeptFactors kept, const std::string& keptPath, Scene scene,
                          const std::vector<Rgb>& lightScale, const SolveOptions& solverOptions);
+
+// relightScene in two steps, so that the first can run while the rows are still being read: what
+// needs only the kept header (readKeptFactors with KeptParts::Header): the checks, the mesh, ρ and
+// E from the materials; then, with the whole kept file, the first shot and the solve.
+struct RelightStart {
+  SolveResult result;
+  SolveOptions options;
+  std::chrono::steady_clock::time_point start;
+};
+RelightStart startRelight(const KeptFactors& header, const std::string& keptPath, Scene scene,
+                          const SolveOptions& solverOptions);
+SolveResult finishRelight(RelightStart started, KeptFactors kept, const std::string& keptPath,
+                          const std::vector<Rgb>& lightScale);
 
 }  // namespace rad

@@ -3,6 +3,8 @@
 // hands its storage over (relight relies on it not copying 35 million factors).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <thread>
 #include <vector>
 
 #include "radiosity/core/errors.h"
@@ -76,6 +78,36 @@ TEST(KeptRowTable, TintedRowsHaveNoOneMatrix) {
   EXPECT_EQ(table.row(2).tinted.size(), 1u);
   EXPECT_EQ(table.row(2).tinted[0].g, 0.25);
   EXPECT_THROW(table.takeMatrix(), InputError);
+}
+
+// The reader faults the reserved arrays in from a second thread while it appends rows into them
+// (populateReserved): that must leave every row as appended, before and after.
+TEST(KeptRowTable, PopulatingTheReserveBesideTheAppendsChangesNoRow) {
+  constexpr int kRows = 2000, kPerRow = 600;  // 1.2 million factors: many pages
+  KeptRowTable table;
+  table.reserve(kRows, static_cast<size_t>(kRows) * kPerRow);
+  std::thread populating([&table] { table.populateReserved(); });
+  std::vector<int32_t> targets(kPerRow);
+  std::vector<float> values(kPerRow);
+  for (int r = 0; r < kRows; ++r) {
+    for (int k = 0; k < kPerRow; ++k) {
+      targets[k] = (r + 3 * k) % kRows;
+      values[k] = 1.0f / static_cast<float>(1 + r + k);
+    }
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    table.appendRow(targets.data(), values.data(), targets.size(), 0.5, {});
+    targets.resize(kPerRow);
+  }
+  populating.join();
+  ASSERT_EQ(table.size(), static_cast<size_t>(kRows));
+  for (int r = 0; r < kRows; r += 97) {
+    const FormFactorRow row = table.row(r);
+    ASSERT_FALSE(row.targets.empty());
+    for (size_t k = 0; k < row.targets.size(); ++k)
+      ASSERT_EQ(row.values[k], static_cast<double>(1.0f / static_cast<float>(1 + r + k)))
+          << "row " << r << " factor " << k;
+  }
 }
 
 }  // namespace
