@@ -169,16 +169,25 @@ TEST(CliRelight, BakeOfTheRelitSolutionIsTheBakeOfTheChangedScene) {
   }
   EXPECT_GT(changedMost, 0.05 * peak);
 
-  // A relit solution.json whose overrides were edited into nonsense: the file and the pointer.
-  std::string json = readText(relit / "solution.json");
-  json.replace(json.find("\"light_scale\""), 13, "\"light_scale\": 7, \"x\"");
-  std::ofstream(relit / "solution.json") << json;
-  r = runRadiosity("bake " + scene.string() + " --lights " + lamps.string() + " --solution " +
-                   relit.string() + " --out " + (root / "bad").string() + options);
-  EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.stderrText.find("solution.json"), std::string::npos) << r.stderrText;
-  EXPECT_NE(r.stderrText.find("/relit/light_scale"), std::string::npos) << r.stderrText;
-  EXPECT_FALSE(fs::exists(root / "bad"));
+  // A relit solution.json whose overrides were edited into nonsense: the file and the pointer of
+  // the bad value, and no output directory.
+  const std::string good = readText(relit / "solution.json");
+  auto refused = [&](const std::string& from, const std::string& to, const std::string& pointer) {
+    std::string json = good;
+    ASSERT_NE(json.find(from), std::string::npos) << from;
+    json.replace(json.find(from), from.size(), to);
+    std::ofstream(relit / "solution.json") << json;
+    const auto b =
+        runRadiosity("bake " + scene.string() + " --lights " + lamps.string() + " --solution " +
+                     relit.string() + " --out " + (root / "bad").string() + options);
+    EXPECT_EQ(b.exitCode, 1) << pointer;
+    EXPECT_NE(b.stderrText.find("solution.json"), std::string::npos) << b.stderrText;
+    EXPECT_NE(b.stderrText.find(pointer), std::string::npos) << b.stderrText;
+    EXPECT_FALSE(fs::exists(root / "bad"));
+  };
+  refused("\"light_scale\"", "\"light_scale\": 7, \"x\"", "/relit/light_scale");
+  refused("\"index\": 1", "\"index\": \"one\"", "/relit/materials/0");
+  refused("0.1,", "-0.1,", "/relit/materials/0/diffuse");
   fs::remove_all(root);
 }
 
