@@ -7,7 +7,8 @@
 # through loadScene and loadGltfCamera), texture_image (image bytes through decodeTexture, as MTL
 # and glTF textures reach it), scene_overrides (relight's override file through
 # loadSceneOverrides), kept_factors (factors.bin of solve --keep-factors through
-# readKeptFactors), probes_bin (probes.bin of solve --probes through readProbesBinary) and, where
+# readKeptFactors), probes_bin (probes.bin of solve --probes through readProbesBinary),
+# saved_solution (solution.json and its elements CSV through loadSavedSolution) and, where
 # VTK is installed, solution_vtp
 # (a saved solution.vtp through the viewer's reader and what the viewer computes from it).
 # Default: 60 s each, every target the build has, one after the other. Each run starts from the

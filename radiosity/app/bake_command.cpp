@@ -1,5 +1,8 @@
 // `radiosity bake SCENE.obj --out DIR`: the solution baked into a lightmap atlas and into exports
 // that game engines and DCC tools load (glTF binary, OBJ + MTL, PLY vertex colours).
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -213,6 +216,10 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     throw InputError("--dilation " + std::to_string(o.dilation) + " exceeds --padding " +
                      std::to_string(o.padding) +
                      ": dilated texels of neighbouring charts would meet");
+  // --threads caps the whole bake (gather, rasterising, EXR compression), not the solve alone.
+  const int threads = o.solve.threads > 0 ? o.solve.threads : tbb::info::default_concurrency();
+  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
+                                        static_cast<size_t>(threads));
   // The scene's UVs are checked before the solve, so a bad layout fails in seconds.
   const auto loadStart = std::chrono::steady_clock::now();
   Scene scene = loadScene(o.solve.scenePath, o.solve.lights, o.solve.twoSided);

@@ -55,11 +55,8 @@ void runRelight(const RelightOptions& o) {
     for (const Material& m : scene.materials) materialNames.push_back(m.name);
     const SceneOverrides overrides =
         loadSceneOverrides(o.overrideFile, materialNames, header.lightGroups);
-    for (const auto& [index, change] : overrides.materials) {
-      Material& m = scene.materials[static_cast<size_t>(index)];
-      if (change.diffuse) m.diffuse = *change.diffuse;
-      if (change.emission) m.emission = *change.emission;
-    }
+    for (const auto& [index, change] : overrides.materials)
+      applyMaterialOverride(scene.materials[static_cast<size_t>(index)], change);
     lightScale = overrides.lightScale;
     materialChanges = overrides.materials;
   }

@@ -6,10 +6,11 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfThreading.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <thread>
+#include <mutex>
 
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/check.h"
@@ -58,13 +59,15 @@ void writeExr(const std::string& path, const ImageRgb& image,
       char* base = reinterpret_cast<char*>(const_cast<float*>(channel.values.data()));
       frame.insert(channel.name, Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * w));
     }
-    // Its ZIP compression on every core (OpenEXR's own thread pool, started once): a lightmap
-    // page of 2.5 million texels took 0.6 s on one.
-    static const int threads = [] {
-      const int n = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-      Imf::setGlobalThreadCount(n);
-      return n;
-    }();
+    // Its ZIP compression on as many cores as the command may use (OpenEXR's own thread pool,
+    // sized to TBB's limit, which --threads sets): a page of 2.5 million texels took 0.6 s on one.
+    const int threads = static_cast<int>(std::max<size_t>(
+        1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
+    {
+      static std::mutex poolResize;
+      const std::lock_guard<std::mutex> lock(poolResize);
+      if (Imf::globalThreadCount() != threads) Imf::setGlobalThreadCount(threads);
+    }
     Imf::OutputFile out(file.tempPath().c_str(), header, threads);
     out.setFrameBuffer(frame);
     out.writePixels(h);

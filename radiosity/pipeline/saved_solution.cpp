@@ -15,6 +15,7 @@
 #include "radiosity/pipeline/mesh_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/scene/lights.h"
+#include "radiosity/scene/scene_overrides.h"
 
 namespace rad {
 namespace {
@@ -80,9 +81,10 @@ std::optional<Scene> relitScene(const nlohmann::json& relit, const Scene& scene,
                m["name"].get<std::string>() + ")";
       return std::nullopt;
     }
-    Material& material = changed.materials[static_cast<size_t>(index)];
-    if (m.contains("diffuse")) material.diffuse = rgbAt(m["diffuse"], at + "/diffuse");
-    if (m.contains("emission")) material.emission = rgbAt(m["emission"], at + "/emission");
+    MaterialOverride change;
+    if (m.contains("diffuse")) change.diffuse = rgbAt(m["diffuse"], at + "/diffuse");
+    if (m.contains("emission")) change.emission = rgbAt(m["emission"], at + "/emission");
+    applyMaterialOverride(changed.materials[static_cast<size_t>(index)], change);
   }
   if (scales->size() != changed.lights.size()) {
     whyNot = "the saved solution was relit for " + std::to_string(scales->size()) +
@@ -164,8 +166,17 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
       throw InputError(jsonPath, 0, "unreadable saved solution: " + std::string(e.what()));
     }
   }
-  if (!meta.is_object() || meta.value("format", "") != kFormat || !meta.contains("fingerprint") ||
-      !meta["fingerprint"].is_string())
+  // The member `key`, which must have the type of `fallback`, or `fallback` where it is absent.
+  auto member = [&](const char* key, const nlohmann::json& fallback) {
+    const auto it = meta.find(key);
+    if (it == meta.end()) return fallback;
+    if (it->type() != fallback.type())
+      throw InputError(jsonPath, 0,
+                       std::string("/") + key + ": expected a " + fallback.type_name());
+    return *it;
+  };
+  if (!meta.is_object() || !meta.contains("format") || meta["format"] != kFormat ||
+      !meta.contains("fingerprint") || !meta["fingerprint"].is_string())
     throw InputError(jsonPath, 0,
                      std::string("not a saved solution (expected \"format\": \"") + kFormat +
                          "\" and a \"fingerprint\"); delete it to solve again");
@@ -180,7 +191,7 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
     whyNot = "the saved solution was made from another scene or other solve options";
     return std::nullopt;
   }
-  const auto csvName = meta.value("elements_file", std::string(kSolutionCsv));
+  const auto csvName = member("elements_file", kSolutionCsv).get<std::string>();
   if (csvName.empty() || csvName.find('/') != std::string::npos || csvName == "..")
     throw InputError(jsonPath, 0, "\"elements_file\" must name a file beside solution.json");
   const std::string csvPath = (base / csvName).string();
@@ -224,8 +235,8 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   auto exposure = std::make_shared<const ElementExposure>(solveExposure(options, mesh, rays));
   result.solution.problem = makeProblem(result.solution.scene, mesh, exposure.get());
   result.solution.exposure = std::move(exposure);
-  result.report.solverName = meta.value("solver", std::string("saved")) + " (reused)";
-  result.report.converged = meta.value("converged", false);
+  result.report.solverName = member("solver", "saved").get<std::string>() + " (reused)";
+  result.report.converged = member("converged", false).get<bool>();
   result.report.maxArea = meshed.maxArea;
   result.report.elementSize = meshed.sizing.edge;
   result.report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);

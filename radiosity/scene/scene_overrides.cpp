@@ -198,4 +198,9 @@ SceneOverrides loadSceneOverrides(const std::string& path,
   return out;
 }
 
+void applyMaterialOverride(Material& material, const MaterialOverride& change) {
+  if (change.diffuse) material.diffuse = *change.diffuse;
+  if (change.emission) material.emission = *change.emission;
+}
+
 }  // namespace rad

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "radiosity/core/rgb.h"
+#include "radiosity/scene/material.h"
 
 namespace rad {
 
@@ -16,6 +17,9 @@ struct MaterialOverride {
                                 // each channel in [0, 1]
   std::optional<Rgb> emission;  // Ke: emitted radiance W·m⁻²·sr⁻¹, >= 0, finite
 };
+
+// Sets what `change` sets in `material` (relight, and a relit solution's scene when reused).
+void applyMaterialOverride(Material& material, const MaterialOverride& change);
 
 // A relight override file as read: the materials it changes and every light's scale.
 struct SceneOverrides {

@@ -85,5 +85,35 @@ TEST(CliRenderReuse, EditedSolutionIsRefusedWithFileAndLine) {
   fs::remove_all(out);
 }
 
+// A member of solution.json of the wrong type (here the solver's name, a number) is an input
+// error naming the file and the member, not an exception from the JSON library.
+TEST(CliRenderReuse, MistypedSolutionJsonMemberIsRefusedWithFileAndPointer) {
+  const fs::path out = scratchPath("render_reuse_mistyped");
+  ASSERT_EQ(runRadiosity("render " + kScene + " --out " + out.string() + kOptions).exitCode, 0);
+  for (const std::string member : {"solver", "converged", "elements_file"}) {
+    SCOPED_TRACE(member);
+    nlohmann::json meta;
+    {
+      std::ifstream in(out / "solution.json");
+      meta = nlohmann::json::parse(in);
+    }
+    const nlohmann::json kept = meta[member];
+    meta[member] = nlohmann::json::array({1});
+    std::ofstream(out / "solution.json") << meta.dump();
+    fs::remove(out / "render.exr");
+    fs::remove(out / "render.json");
+    const auto r = runRadiosity("render " + kScene + " --out " + out.string() + kOptions);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.stderrText.find((out / "solution.json").string() + ": /" + member),
+              std::string::npos)
+        << r.stderrText;
+    EXPECT_FALSE(fs::exists(out / "render.exr"));
+    EXPECT_FALSE(fs::exists(out / "render.json"));
+    meta[member] = kept;
+    std::ofstream(out / "solution.json") << meta.dump();
+  }
+  fs::remove_all(out);
+}
+
 }  // namespace
 }  // namespace rad
