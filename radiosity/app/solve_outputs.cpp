@@ -170,10 +170,13 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
                             {"rays_changed", r.update.raysChanged},
                             {"rows_cast_again", r.rowsComputed},
                             {"rows_with_other_exposure_or_budget", r.update.rowsOtherChange},
+                            {"direct_light_kept", r.update.directLightKept},
                             {"note",
                              "a kept row of an element that stayed put is reused; the rays of it "
                              "that meet the edited geometry's old or new place before their first "
-                             "hit are cast again and their hits exchanged"}}},
+                             "hit are cast again and their hits exchanged; an element's direct "
+                             "light from a light is kept where none of its shadow rays to it can "
+                             "meet the edit (direct_light_kept counts element-light pairs)"}}},
   };
 }
 

@@ -5,8 +5,10 @@
 // written to --out.
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "radiosity/app/commands.h"
 #include "radiosity/app/solve_outputs.h"
@@ -44,22 +46,32 @@ void runUpdate(const UpdateOptions& o) {
   if (!std::filesystem::exists(csvPath))
     throw InputError(o.dir, 0, "no elements.csv here: the previous solution update starts from");
   auto t = std::chrono::steady_clock::now();
-  const KeptFactors kept = readKeptFactors(keptPath);
-  std::vector<Rgb> previous;
-  for (const ElementsCsvRow& row : readElementsCsv(csvPath)) previous.push_back(row.radiosity);
-  if (previous.size() != kept.area.size())
-    throw InputError(csvPath, 0,
-                     std::to_string(previous.size()) + " elements, the kept factors beside it " +
-                         std::to_string(kept.area.size()) + ": not the same solve");
-  logInfo("read " + keptPath + " and " + csvPath + ": " + std::to_string(kept.rows.size()) +
-          " rows in " + formatNumber(secondsSince(t)) + " s");
-  SolveOptions solver = kept.options;
+  // The rows, the previous solution and the scene (with its mesh) are read side by side: the
+  // file reads are most of a large update's fixed cost.
+  const KeptFactors header = readKeptFactors(keptPath, KeptParts::Header);
+  std::future<KeptFactors> reading =
+      std::async(std::launch::async, [&keptPath] { return readKeptFactors(keptPath); });
+  std::future<std::vector<Rgb>> readingPrevious = std::async(std::launch::async, [&csvPath] {
+    std::vector<Rgb> b;
+    for (const ElementsCsvRow& row : readElementsCsv(csvPath)) b.push_back(row.radiosity);
+    return b;
+  });
+  SolveOptions solver = header.options;
   solver.solver = parseSolverKind(o.solverName);
   if (o.tolerance) solver.tolerance = *o.tolerance;
   if (o.maxIterations) solver.maxIterations = *o.maxIterations;
   solver.threads = o.threads;
   solver.outputDir = o.outputDir.empty() ? o.dir : o.outputDir;
-  SolveResult result = updateKeptSolve(kept, keptPath, previous, solver);
+  UpdateStart started = startUpdate(header, keptPath, solver);
+  const KeptFactors kept = reading.get();
+  const std::vector<Rgb> previous = readingPrevious.get();
+  if (previous.size() != kept.area.size())
+    throw InputError(csvPath, 0,
+                     std::to_string(previous.size()) + " elements, the kept factors beside it " +
+                         std::to_string(kept.area.size()) + ": not the same solve");
+  logInfo("read " + keptPath + " (" + std::to_string(kept.rows.size()) + " rows), " + csvPath +
+          " and the scene, meshed, in " + formatNumber(secondsSince(t)) + " s");
+  SolveResult result = finishUpdate(std::move(started), kept, keptPath, previous);
   throwIfInterrupted();
   SolveOptions written = updatedSolutionOptions(kept, result);
   written.outputDir = solver.outputDir;

@@ -272,7 +272,7 @@ void DirectLightStage::addEmission(RadiosityProblem& problem) const {
     problem.emission[e] += problem.reflectance[e] * irradiance_[e];
 }
 
-void DirectLightStage::apply(RadiosityProblem& problem) {
+void DirectLightStage::apply(RadiosityProblem& problem, const KnownIrradiance* known) {
   if (lights_.empty()) return;
   const auto start = std::chrono::steady_clock::now();
   const int n = mesh_.elementCount();
@@ -282,7 +282,19 @@ void DirectLightStage::apply(RadiosityProblem& problem) {
     pointMean_.assign(n, Rgb());
   }
   elementRays_.assign(n, 0);
-  tbb::parallel_for(0, n, [&](int e) { compute(e); });
+  int reused = 0;
+  if (known) {
+    RAD_CHECK_MSG(!keepPoints_, "known E_d has no receiver-point values");
+    RAD_CHECK(known->value.size() == static_cast<size_t>(n) &&
+              known->known.size() == static_cast<size_t>(n));
+    reused = static_cast<int>(std::count(known->known.begin(), known->known.end(), 1));
+  }
+  tbb::parallel_for(0, n, [&](int e) {
+    if (known && known->known[e])
+      irradiance_[e] = known->value[e];
+    else
+      compute(e);
+  });
   raysCast_ = std::accumulate(elementRays_.begin(), elementRays_.end(), uint64_t{0});
   addEmission(problem);
   if (std::all_of(irradiance_.begin(), irradiance_.end(), [](const Rgb& e) { return e.isZero(); }))
@@ -292,8 +304,9 @@ void DirectLightStage::apply(RadiosityProblem& problem) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   logInfo("direct light: " + std::to_string(lights_.size()) + " light(s) at " + std::to_string(n) +
-          " elements, " + std::to_string(raysCast_) + " shadow rays, " + formatNumber(seconds) +
-          " s");
+          " elements" +
+          (known ? " (" + std::to_string(reused) + " kept from before the edit)" : std::string()) +
+          ", " + std::to_string(raysCast_) + " shadow rays, " + formatNumber(seconds) + " s");
 }
 
 void DirectLightStage::meshChanged(const std::vector<int>& changed, RadiosityProblem& problem) {

@@ -57,6 +57,13 @@ Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vec
 // (analytic factors' Gauss points), E_d is computed there too, for the displayed variation inside
 // the element. Holds references to the scene, mesh and ray caster, which must
 // outlive it.
+// E_d already known for some elements (update: those whose shadow rays an edit cannot meet):
+// known[e] says whether value[e] stands; both one per element.
+struct KnownIrradiance {
+  std::vector<Rgb> value;
+  std::vector<char> known;
+};
+
 class DirectLightStage {
  public:
   // With `exposure`, points in a buried part of an element are left out (with no receiver point
@@ -67,8 +74,9 @@ class DirectLightStage {
                    const SolveOptions& options, const ElementExposure* exposure = nullptr,
                    const std::vector<size_t>* lights = nullptr);
 
-  // Computes E_d for every element and adds ρ E_d to problem.emission; logs one line.
-  void apply(RadiosityProblem& problem);
+  // Computes E_d for every element and adds ρ E_d to problem.emission; logs one line. Elements
+  // `known` gives take its value and cast no ray (not with receiver points kept, RAD_CHECK).
+  void apply(RadiosityProblem& problem, const KnownIrradiance* known = nullptr);
   // After refinement split the elements `changed` (problem rebuilt by makeProblem): E_d of the
   // changed elements afresh, then ρ E_d added to every element's emission again.
   void meshChanged(const std::vector<int>& changed, RadiosityProblem& problem);

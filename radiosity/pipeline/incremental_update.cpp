@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <numeric>
 #include <unordered_map>
@@ -15,6 +16,7 @@
 #include "radiosity/core/log.h"
 #include "radiosity/core/progress.h"
 #include "radiosity/core/seconds_since.h"
+#include "radiosity/pipeline/edit_reach.h"
 #include "radiosity/pipeline/element_size.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
@@ -61,49 +63,99 @@ std::vector<int> matchElements(const KeptFactors& kept, const PatchMesh& mesh) {
 // Kept row `row` in the new element numbering, the entries of kept elements no longer in the mesh
 // left out (the rays that hit them meet the edit's old place first: updateRow adds their new hits).
 void renumber(FormFactorRow& row, const std::vector<int>& newIndexOfOld) {
-  std::vector<std::pair<int, double>> entries;
-  entries.reserve(row.targets.size());
+  // In place; the kept elements keep their order in the new mesh (it meshes the polygons in file
+  // order), so the targets mostly stay sorted and need no sort.
+  size_t count = 0;
+  bool sorted = true;
   for (size_t k = 0; k < row.targets.size(); ++k) {
     const int to = newIndexOfOld[static_cast<size_t>(row.targets[k])];
-    if (to >= 0) entries.emplace_back(to, row.values[k]);
+    if (to < 0) continue;
+    sorted = sorted && (count == 0 || row.targets[count - 1] < to);
+    row.targets[count] = to;
+    row.values[count++] = row.values[k];
   }
+  row.targets.resize(count);
+  row.values.resize(count);
+  if (sorted) return;
+  std::vector<std::pair<int, double>> entries(count);
+  for (size_t k = 0; k < count; ++k) entries[k] = {row.targets[k], row.values[k]};
   std::sort(entries.begin(), entries.end());
-  row.targets.resize(entries.size());
-  row.values.resize(entries.size());
-  for (size_t k = 0; k < entries.size(); ++k) {
+  for (size_t k = 0; k < count; ++k) {
     row.targets[k] = entries[k].first;
     row.values[k] = entries[k].second;
   }
+}
+
+bool sameArea(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }
+
+EditBox editBox(const std::vector<std::array<Eigen::Vector3d, 3>>& region) {
+  EditBox box{Eigen::Vector3d::Constant(HUGE_VAL), Eigen::Vector3d::Constant(-HUGE_VAL)};
+  for (const auto& t : region)
+    for (const Eigen::Vector3d& p : t) {
+      box.lo = box.lo.cwiseMin(p);
+      box.hi = box.hi.cwiseMax(p);
+    }
+  return box;
+}
+
+// Per light, the kept E_d of the elements whose shadow rays to it cannot meet the edit (matched,
+// with the same exposed area, so the same strata and rays).
+std::vector<KnownIrradiance> directLightTheEditLeaves(const KeptFactors& kept,
+                                                      const Solution& solution,
+                                                      const std::vector<int>& match,
+                                                      const EditBox& box) {
+  const PatchMesh& mesh = *solution.mesh;
+  const int n = mesh.elementCount();
+  // Far beyond the rays' lift-off (RayCaster::surfaceOffset, 1e-5 of the scene's size or less).
+  const double margin = 1e-4 * mesh.boundsDiagonal();
+  std::vector<KnownIrradiance> known(solution.scene.lights.size());
+  for (size_t l = 0; l < known.size(); ++l) {
+    KnownIrradiance& k = known[l];
+    k.value.assign(static_cast<size_t>(n), Rgb());
+    k.known.assign(static_cast<size_t>(n), 0);
+    if (!(box.lo.array() <= box.hi.array()).all()) continue;  // no edit: every element
+    tbb::parallel_for(0, n, [&](int e) {
+      const int old = match[static_cast<size_t>(e)];
+      if (old < 0 || !sameArea(solution.problem.area[e], kept.area[static_cast<size_t>(old)]))
+        return;
+      if (shadowRaysMayMeet(solution.scene.lights[l], mesh.corners(e), mesh.normal(e), box, margin))
+        return;
+      k.value[static_cast<size_t>(e)] = kept.lightIrradiance[l][static_cast<size_t>(old)];
+      k.known[static_cast<size_t>(e)] = 1;
+    });
+  }
+  return known;
 }
 
 }  // namespace
 
 SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
                             const std::vector<Rgb>& previous, const SolveOptions& solverOptions) {
-  const auto start = Clock::now();
-  if (previous.size() != kept.area.size())
-    throw InputError(keptPath, 0,
-                     "the previous solution has " + std::to_string(previous.size()) +
-                         " elements, the kept factors " + std::to_string(kept.area.size()) +
-                         ": not the same solve");
+  return finishUpdate(startUpdate(kept, keptPath, solverOptions), kept, keptPath, previous);
+}
+
+UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
+                        const SolveOptions& solverOptions) {
+  UpdateStart started;
+  started.start = Clock::now();
   if (solverOptions.solver != SolverKind::GaussSeidel && solverOptions.solver != SolverKind::Jacobi)
     throw InputError(
         "update continues from the previous solution, which only the gathering "
         "solvers can: --solver gauss-seidel (the default) or jacobi");
   // The kept solve's mesh and ray options, with its element size fixed: an added object must not
   // change the size the scene's default would pick, or no element would stay put.
-  SolveOptions options = withSolverOf(kept.options, solverOptions);
-  options.scenePath = kept.scenePath;
-  options.lights = kept.lightInput;
+  SolveOptions& options = started.options;
+  options = withSolverOf(header.options, solverOptions);
+  options.scenePath = header.scenePath;
+  options.lights = header.lightInput;
   options.maxArea = 0;
   options.targetElements = 0;
-  options.elementSize = kept.elementEdge;
+  options.elementSize = header.elementEdge;
   options.keepFactors = true;
   validateSolveOptions(options);
 
-  SolveResult result;
-  Solution& solution = result.solution;
-  SolveReport& report = result.report;
+  Solution& solution = started.result.solution;
+  SolveReport& report = started.result.report;
   report.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
   const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
                                         static_cast<size_t>(report.threads));
@@ -117,23 +169,40 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
         keptPath, 0,
         "the scene has mirrors or glass, whose rows continue past their first hit: "
         "update cannot tell which of them an edit changes; solve --keep-factors again");
-  if (solution.scene.lights.size() != kept.lightIrradiance.size())
+  if (solution.scene.lights.size() != header.lightTypes.size())
     throw InputError(keptPath, 0,
                      "the scene has " + std::to_string(solution.scene.lights.size()) +
-                         " lights, the kept solve had " +
-                         std::to_string(kept.lightIrradiance.size()) +
+                         " lights, the kept solve had " + std::to_string(header.lightTypes.size()) +
                          ": update follows geometry edits; solve --keep-factors again");
 
   t = Clock::now();
   MeshedScene meshed = meshScene(solution.scene, options);
   solution.mesh = std::move(meshed.mesh);
-  const PatchMesh& mesh = *solution.mesh;
-  const int n = mesh.elementCount();
   report.maxArea = meshed.maxArea;
   report.elementSize = meshed.sizing.edge;
   report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
-  report.elementsBeforeRefinement = n;
+  report.elementsBeforeRefinement = solution.mesh->elementCount();
   report.times.mesh = secondsSince(t);
+  return started;
+}
+
+SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std::string& keptPath,
+                         const std::vector<Rgb>& previous) {
+  const auto start = started.start;
+  const SolveOptions& options = started.options;
+  if (previous.size() != kept.area.size())
+    throw InputError(keptPath, 0,
+                     "the previous solution has " + std::to_string(previous.size()) +
+                         " elements, the kept factors " + std::to_string(kept.area.size()) +
+                         ": not the same solve");
+  RAD_CHECK_EQ(kept.lightIrradiance.size(), started.result.solution.scene.lights.size());
+  SolveResult result = std::move(started.result);
+  Solution& solution = result.solution;
+  SolveReport& report = result.report;
+  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
+                                        static_cast<size_t>(report.threads));
+  const PatchMesh& mesh = *solution.mesh;
+  const int n = mesh.elementCount();
 
   // Which elements stayed put; the region of the edit: the moved or added elements where they
   // are now, and the kept elements no longer there where they were.
@@ -161,15 +230,21 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   logInfo("update: " + std::to_string(n) + " elements, " + std::to_string(update.moved) +
           " moved or added, " + std::to_string(update.removed) + " moved or removed");
 
-  t = Clock::now();
+  auto t = Clock::now();
   const RayCaster rays(mesh, solution.scene);
   report.times.bvh = secondsSince(t);
   const ElementExposure exposure = solveExposure(options, mesh, rays);
   report.exposureProbeRays = exposure.probeRays();
   solution.problem = makeProblem(solution.scene, mesh, &exposure);
+  // The lights' first shot: an element that stayed put, with the same exposed area, whose shadow
+  // rays to a light cannot meet the edit keeps the E_d the kept solve computed.
+  const std::vector<KnownIrradiance> knownDirect =
+      directLightTheEditLeaves(kept, solution, match, editBox(region));
+  for (const KnownIrradiance& k : knownDirect)
+    update.directLightKept += std::count(k.known.begin(), k.known.end(), 1);
   std::vector<int> rayMultipliers;
-  std::shared_ptr<KeptFactors> next = keepLightsApart(solution, rays, options, exposure,
-                                                      meshed.sizing.edge, rayMultipliers, report);
+  std::shared_ptr<KeptFactors> next = keepLightsApart(
+      solution, rays, options, exposure, report.elementSize, rayMultipliers, report, &knownDirect);
 
   // Rows: a kept row is brought up to date ray by ray when its element stayed put with the same
   // exposed area and ray budget; the others are cast again.
@@ -185,8 +260,7 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   for (int e = 0; e < n; ++e) {
     const int old = match[static_cast<size_t>(e)];
     if (old < 0) continue;
-    const double a = solution.problem.area[e], b = kept.area[static_cast<size_t>(old)];
-    if (std::abs(a - b) > 1e-9 * std::max(a, b) ||
+    if (!sameArea(solution.problem.area[e], kept.area[static_cast<size_t>(old)]) ||
         rayMultipliers[e] != kept.rayMultiplier[static_cast<size_t>(old)]) {
       ++update.rowsOtherChange;
       continue;
@@ -240,8 +314,10 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   for (int e = 0; e < n; ++e)
     if (match[static_cast<size_t>(e)] >= 0) guess[e] = previous[match[static_cast<size_t>(e)]];
   KeptRows keptRows(*next);
-  const std::unique_ptr<Solver> solver =
-      makeSolver(options.solver, solution.problem, keptRows, [&] { return next->rows.matrix(); });
+  // The solver borrows the rows' matrix and gives it back for factors.bin (copying 35 million
+  // factors took seconds).
+  const std::unique_ptr<Solver> solver = makeSolver(options.solver, solution.problem, keptRows,
+                                                    [&] { return next->rows.lendMatrix(); });
   auto* gathering = dynamic_cast<GatheringSolver*>(solver.get());
   RAD_CHECK(gathering != nullptr);
   gathering->startFrom(std::move(guess));
@@ -250,6 +326,7 @@ SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath
   report.converged = converged(report.stoppedBy);
   solution.radiosity = solver->solution();
   reportSolver(*solver, report);
+  next->rows.returnMatrix(gathering->releaseMatrix());
   formFactors.report(report, options.solver);
   report.shooters = n;
   report.times.solve = secondsSince(t);

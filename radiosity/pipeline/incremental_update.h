@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,10 @@ namespace rad {
 // stayed put; the others (and the old elements no longer there) make up the edit's region. An
 // element that stayed put keeps its row when none of its row's rays (the same rays a fresh solve
 // would cast: the same random streams) meets a triangle of the region, when its exposed area and
-// its row's ray budget are unchanged; every other row is cast again. The lights' first shot and
-// the buried parts are computed again in full (they cost a fraction of the rows). The solve is a
+// its row's ray budget are unchanged; every other row is cast again. An element that stayed put
+// with the same exposed area keeps its direct light from a light (sun, sky, lamp) where none of
+// its shadow rays to it can meet the region's bounds (edit_reach.h); the others' is cast again.
+// The buried parts are computed again in full (they cost a fraction of the rows). The solve is a
 // gathering solver's (Gauss–Seidel by default; Jacobi), starting from the previous solution
 // (`previous`, B per kept element; new elements start from their emission). Returns the solution
 // with its kept factors, to be written back for the next update or relight; what the edit changed
@@ -30,6 +33,20 @@ namespace rad {
 // hit), a progressive or Southwell solver, `previous` not one value per kept element.
 SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
                             const std::vector<Rgb>& previous, const SolveOptions& solverOptions);
+
+// updateKeptSolve in two steps, so that the first runs while factors.bin is still being read:
+// from the kept header alone (readKeptFactors with KeptParts::Header), the scene loaded, checked
+// and meshed with the kept element size; then, with the whole kept file and the previous
+// solution, the rest.
+struct UpdateStart {
+  SolveResult result;  // the scene and its mesh so far
+  SolveOptions options;
+  std::chrono::steady_clock::time_point start;
+};
+UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
+                        const SolveOptions& solverOptions);
+SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std::string& keptPath,
+                         const std::vector<Rgb>& previous);
 
 // The options the updated solution is saved under (solution.json, so `bake --solution DIR` reuses
 // it): the kept solve's own, with the update's solver and tolerance, when its element-size rule

@@ -25,16 +25,46 @@ constexpr const char* kMagic = "radiosity kept factors 2\n";
 constexpr const char* kOlderMagic = "radiosity kept factors 1\n";
 constexpr uint64_t kMaxHeaderBytes = 1 << 24;
 
+// The file's bytes gathered into large chunks before they reach the stream: written row by row
+// (a few kilobytes each), a large scene's factors.bin took 134,000 write calls and over a second.
+class ChunkedWriter {
+ public:
+  explicit ChunkedWriter(std::ostream& out) : out_(out) { buffer_.reserve(kChunk); }
+  void bytes(const void* data, size_t count) {
+    if (buffer_.size() + count > kChunk) flush();
+    const char* p = static_cast<const char*>(data);
+    if (count >= kChunk) {
+      out_.write(p, static_cast<std::streamsize>(count));
+      return;
+    }
+    buffer_.insert(buffer_.end(), p, p + count);
+  }
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+
+ private:
+  static constexpr size_t kChunk = size_t{4} << 20;
+  std::ostream& out_;
+  std::vector<char> buffer_;
+};
+
 template <typename T>
-void put(std::ostream& out, const T& value) {
+void put(ChunkedWriter& out, const T& value) {
   static_assert(std::is_trivially_copyable_v<T>);
-  out.write(reinterpret_cast<const char*>(&value), sizeof(T));  // little-endian hosts only
+  out.bytes(&value, sizeof(T));  // little-endian hosts only
 }
 
 template <typename T>
-void putArray(std::ostream& out, const std::vector<T>& values) {
-  out.write(reinterpret_cast<const char*>(values.data()),
-            static_cast<std::streamsize>(values.size() * sizeof(T)));
+void putArray(ChunkedWriter& out, const T* values, size_t count) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  out.bytes(values, count * sizeof(T));
+}
+
+template <typename T>
+void putArray(ChunkedWriter& out, const std::vector<T>& values) {
+  putArray(out, values.data(), values.size());
 }
 
 // Reads the file's parts in order; every read that falls short names the part and the file.
@@ -222,7 +252,8 @@ std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& o) {
   return f.hex();
 }
 
-void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
+void writeKeptFactors(std::ostream& stream, const KeptFactors& kept) {
+  ChunkedWriter out(stream);
   const size_t n = kept.area.size();
   nlohmann::json lights = nlohmann::json::array();
   for (size_t l = 0; l < kept.lightGroups.size(); ++l)
@@ -237,9 +268,9 @@ void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
       {"light_input", lightInputJson(kept.lightInput)},
       {"lights_fingerprint",
        kept.lightsFingerprint}}.dump();
-  out.write(kMagic, static_cast<std::streamsize>(std::strlen(kMagic)));
+  out.bytes(kMagic, std::strlen(kMagic));
   put(out, static_cast<uint64_t>(header.size()));
-  out.write(header.data(), static_cast<std::streamsize>(header.size()));
+  out.bytes(header.data(), header.size());
   putArray(out, kept.area);
   for (const std::vector<Rgb>& irradiance : kept.lightIrradiance) {
     std::vector<double> values;
@@ -247,13 +278,14 @@ void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
     putArray(out, values);
   }
   std::vector<float> values, tinted;
+  static_assert(sizeof(int) == sizeof(int32_t));
   for (size_t i = 0; i < kept.rows.size(); ++i) {
-    const FormFactorRow row = kept.rows.row(i);
-    put(out, static_cast<uint32_t>(row.targets.size()));
+    const KeptRowTable::RowView row = kept.rows.view(i);
+    put(out, static_cast<uint32_t>(row.count));
     put(out, static_cast<uint8_t>(!row.tinted.empty()));
     put(out, row.escaped);
-    putArray(out, row.targets);
-    values.assign(row.values.begin(), row.values.end());
+    putArray(out, row.targets, row.count);
+    values.assign(row.values, row.values + row.count);
     putArray(out, values);
     if (row.tinted.empty()) continue;
     tinted.clear();
@@ -274,6 +306,7 @@ void writeKeptFactors(std::ostream& out, const KeptFactors& kept) {
   std::vector<uint8_t> multiplier;
   for (int m : kept.rayMultiplier) multiplier.push_back(static_cast<uint8_t>(m));
   putArray(out, multiplier);
+  out.flush();
 }
 
 KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
@@ -394,8 +427,9 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
 std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster& rays,
                                              const SolveOptions& options,
                                              const ElementExposure& exposure, double elementEdge,
-                                             std::vector<int>& rayMultipliers,
-                                             SolveReport& report) {
+                                             std::vector<int>& rayMultipliers, SolveReport& report,
+                                             const std::vector<KnownIrradiance>* known) {
+  RAD_CHECK(!known || known->size() == solution.scene.lights.size());
   const Scene& scene = solution.scene;
   const PatchMesh& mesh = *solution.mesh;
   auto kept = std::make_shared<KeptFactors>();
@@ -419,7 +453,7 @@ std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster
   for (size_t l = 0; l < scene.lights.size(); ++l) {
     const std::vector<size_t> one{l};
     DirectLightStage stage(scene, mesh, rays, options, &exposure, &one);
-    stage.apply(solution.problem);
+    stage.apply(solution.problem, known ? &(*known)[l] : nullptr);
     kept->lightTypes.push_back(lightTypeName(scene.lights[l].type));
     kept->lightIrradiance.push_back(stage.irradiance());
     sources.push_back(stage.irradiance());

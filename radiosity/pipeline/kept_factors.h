@@ -11,6 +11,7 @@
 #include "radiosity/core/rgb.h"
 #include "radiosity/formfactors/form_factor_row.h"
 #include "radiosity/formfactors/shot_rows.h"
+#include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/kept_row_table.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_options.h"
@@ -76,11 +77,12 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts = KeptParts
 // can scale each E_d), added to the emission; the rays per emitter row from each source's own
 // shares, without ρ (sourceRayMultipliers): relight changes neither. Returns the kept factors
 // without their rows (taken after the solve), with the mesh `update` compares against;
-// `elementEdge` the mesh's element size S.
+// `elementEdge` the mesh's element size S. `known` (update), one per light: E_d that stands.
 std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster& rays,
                                              const SolveOptions& options,
                                              const ElementExposure& exposure, double elementEdge,
-                                             std::vector<int>& rayMultipliers, SolveReport& report);
+                                             std::vector<int>& rayMultipliers, SolveReport& report,
+                                             const std::vector<KnownIrradiance>* known = nullptr);
 
 // The kept solve's options `kept` with the solver, stopping rule, threads and output directory of
 // `solver`: what relight and update solve with.

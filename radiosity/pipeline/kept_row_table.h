@@ -35,6 +35,15 @@ class KeptRowTable {
   size_t size() const { return escaped_.size(); }
   size_t factorCount() const { return static_cast<size_t>(f_.nonZeros()); }
   FormFactorRow row(size_t i) const;
+  // Row i in place (valid while the table is unchanged), for a writer that copies it anyway.
+  struct RowView {
+    const int* targets;
+    const double* values;
+    size_t count;
+    double escaped;
+    const std::vector<Rgb>& tinted;
+  };
+  RowView view(size_t i) const;
   bool anyTinted() const { return tintedRows_ > 0; }
 
   // For a reader that knows the row count and a bound on the factors before the rows: appends
@@ -48,6 +57,11 @@ class KeptRowTable {
   // F for the gathering solvers, moved out (the table is left empty). InputError when a row is
   // tinted: they use one matrix for all channels.
   Matrix takeMatrix();
+  // F lent to a solver and given back when it is done (swapped both ways, no copy), so that the
+  // table, still holding the rows, is then kept: `update` solves with the rows it writes. Rows
+  // cannot be read meanwhile (RAD_CHECK). InputError as takeMatrix.
+  Matrix lendMatrix();
+  void returnMatrix(Matrix&& f);
   Matrix matrix() const { return KeptRowTable(*this).takeMatrix(); }  // a copy, the table kept
 
  private:

@@ -95,14 +95,16 @@ struct SolveReport {
   std::vector<Rgb> relitLightScale;
   // update (incremental_update.h): the kept factors it started from and what the edit changed.
   struct Update {
-    std::string keptFactors;   // empty: not an update
-    int moved = 0;             // elements not in the kept mesh (moved or added)
-    int removed = 0;           // kept elements no longer in the mesh (moved or removed)
-    int rowsReused = 0;        // kept rows taken as they were: no ray meets the edit first
-    int rowsUpdated = 0;       // kept rows brought up to date ray by ray
-    uint64_t raysChanged = 0;  // … the rays among theirs whose first hit changed
-    int rowsOtherChange = 0;   // rows of unmoved elements cast again: their exposed area or ray
-                               // budget changed, or old and new hits tied
+    std::string keptFactors;      // empty: not an update
+    int moved = 0;                // elements not in the kept mesh (moved or added)
+    int removed = 0;              // kept elements no longer in the mesh (moved or removed)
+    int rowsReused = 0;           // kept rows taken as they were: no ray meets the edit first
+    int rowsUpdated = 0;          // kept rows brought up to date ray by ray
+    uint64_t raysChanged = 0;     // … the rays among theirs whose first hit changed
+    int rowsOtherChange = 0;      // rows of unmoved elements cast again: their exposed area or ray
+                                  // budget changed, or old and new hits tied
+    int64_t directLightKept = 0;  // (element, light) pairs whose E_d was kept: no shadow ray of
+                                  // theirs can meet the edit
   } update;
   // --solver hierarchical (hierarchical_solve.h): the tree, its links and what they cost.
   struct Hierarchy {

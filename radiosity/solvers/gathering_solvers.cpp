@@ -47,12 +47,19 @@ void GatheringSolver::startFrom(std::vector<Rgb> guess) {
   residual_ = relativeResidual(problem_, f_, solution_);
 }
 
+SparseRows GatheringSolver::releaseMatrix() {
+  SparseRows f;
+  f.swap(f_);
+  return f;
+}
+
 void GatheringSolver::finishSweep() {
   ++iterations_;
   residual_ = relativeResidual(problem_, f_, solution_);
 }
 
 void JacobiSolver::step() {
+  RAD_CHECK_MSG(f_.rows() == problem_.size(), "no matrix: it was released");
   std::vector<Rgb> next(problem_.size());
   tbb::parallel_for(
       tbb::blocked_range<int>(0, problem_.size(), 256), [&](const tbb::blocked_range<int>& range) {
@@ -64,6 +71,7 @@ void JacobiSolver::step() {
 }
 
 void GaussSeidelSolver::step() {
+  RAD_CHECK_MSG(f_.rows() == problem_.size(), "no matrix: it was released");
   for (int i = 0; i < problem_.size(); ++i) {
     Rgb others;
     double selfFactor = 0;

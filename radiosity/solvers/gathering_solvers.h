@@ -26,6 +26,8 @@ class GatheringSolver : public Solver {
   // Iterates on from `guess` instead of B_0 = E (one B per element): `update` starts from the
   // solution before the edit, which is already right wherever the edit changed nothing.
   void startFrom(std::vector<Rgb> guess);
+  // Hands F back (swapped out, no copy) once iterating is done; the solver must not step again.
+  SparseRows releaseMatrix();
 
  protected:
   // Takes the matrix over (swapped in: Eigen 3.4's SparseMatrix "move" copies every entry, which

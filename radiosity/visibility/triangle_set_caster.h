@@ -33,9 +33,12 @@ class TriangleSetCaster {
 
  private:
   void release();
+  // Whether the ray (caster frame) surely misses the triangles' widened box.
+  bool missesBox(float ox, float oy, float oz, float dx, float dy, float dz) const;
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   Eigen::Vector3d lo_{0, 0, 0}, hi_{0, 0, 0};
+  float boxLo_[3] = {0, 0, 0}, boxHi_[3] = {0, 0, 0};  // caster frame, widened
 };
 
 }  // namespace rad

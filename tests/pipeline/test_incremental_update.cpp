@@ -25,9 +25,12 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kData = fs::path(RADIOSITY_DATA_DIR) / "cornell_box";
 
+const char* const kOneLamp = R"({"lights": [{"type": "point", "position": [0.45, 0.45, 0.1],
+                                  "intensity": [0.3, 0.18, 0.06]}]})";
+
 // The Cornell box OBJ with the short block's 8 vertices (the 8 lines after "o short_block")
-// shifted by dx along x; a lamp file beside it.
-void writeCornell(const fs::path& dir, double dx) {
+// shifted by dx along x; a lights file beside it.
+void writeCornell(const fs::path& dir, double dx, const char* lights = kOneLamp) {
   fs::create_directories(dir);
   fs::copy_file(kData / "cornell_box.mtl", dir / "cornell_box.mtl",
                 fs::copy_options::overwrite_existing);
@@ -50,9 +53,7 @@ void writeCornell(const fs::path& dir, double dx) {
     out << line << "\n";
   }
   ASSERT_EQ(shortBlockVertices, 8);
-  std::ofstream(dir / "cornell_box.lights.json")
-      << R"({"lights": [{"type": "point", "position": [0.45, 0.45, 0.1],
-             "intensity": [0.3, 0.18, 0.06]}]})";
+  std::ofstream(dir / "cornell_box.lights.json") << lights;
 }
 
 SolveOptions options(const fs::path& dir) {
@@ -131,6 +132,57 @@ TEST_F(IncrementalUpdate, MovedBlockEqualsAFreshSolveAndReusesTheRowsItCannotCha
   // Far fewer rays changed than a recast of the rows would cast.
   EXPECT_LT(u.raysChanged, static_cast<uint64_t>(u.rowsUpdated) * 64 / 4);
   EXPECT_GT(u.rowsOtherChange, 0);  // the floor under the block's old and new footprint
+}
+
+// The lights' first shot: an element keeps its kept E_d from a light only where none of its
+// shadow rays to it can meet the block's old or new place, so every element's E_d from every
+// light must be the fresh solve's, bit for bit (same strata, same random streams), while a share
+// of them is kept for each kind of light. The sun and the sky come in through the open front.
+TEST_F(IncrementalUpdate, DirectLightIsKeptOnlyWhereTheEditCannotShadowIt) {
+  const char* const lights = R"({"lights": [
+      {"type": "point", "position": [0.45, 0.45, 0.1], "intensity": [0.3, 0.18, 0.06]},
+      {"type": "directional", "direction": [0.3, -0.5, 1], "irradiance": [2, 2, 1.6],
+       "angular_diameter_degrees": 0.53},
+      {"type": "sky", "radiance": [0.2, 0.3, 0.5]}]})";
+  const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
+  writeCornell(scene, 0, lights);
+  const SolveResult before = runSolve(options(scene));
+  writeCornell(scene, -0.05, lights);
+  writeCornell(fresh, -0.05, lights);
+  const SolveResult updated =
+      updateKeptSolve(*before.kept, "kept", before.solution.radiosity, options(scene));
+  const SolveResult reference = runSolve(options(fresh));
+  const size_t n = static_cast<size_t>(updated.solution.mesh->elementCount());
+  ASSERT_EQ(updated.kept->lightIrradiance.size(), 3u);
+  int64_t keptPairs = 0;
+  for (size_t l = 0; l < 3; ++l) {
+    SCOPED_TRACE("light " + std::to_string(l));
+    const std::vector<Rgb>& a = updated.kept->lightIrradiance[l];
+    const std::vector<Rgb>& b = reference.kept->lightIrradiance[l];
+    const std::vector<Rgb>& old = before.kept->lightIrradiance[l];
+    ASSERT_EQ(a.size(), n);
+    int unchanged = 0, changed = 0;
+    for (size_t e = 0; e < n; ++e) {
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(a[e][c], b[e][c]) << "element " << e;
+      const bool same = a[e].r == old[e].r && a[e].g == old[e].g && a[e].b == old[e].b;
+      (same ? unchanged : changed) += 1;
+    }
+    // The edit shadows some elements anew from each light, and leaves most alone.
+    EXPECT_GT(changed, 0);
+    EXPECT_GT(unchanged, static_cast<int>(n) / 2);
+    keptPairs += unchanged;
+  }
+  // Kept where the rays cannot meet the edit: never more than the unchanged values, and for
+  // these lights, which see the block from most of the box, well over a tenth of all pairs.
+  const int64_t kept = updated.report.update.directLightKept;
+  EXPECT_LE(kept, keptPairs);
+  EXPECT_GT(kept, static_cast<int64_t>(3 * n) / 10);
+  EXPECT_LT(updated.report.directLightRays, reference.report.directLightRays);
+  const double scale = peak(reference.solution.radiosity);
+  for (size_t e = 0; e < n; ++e)
+    for (int c = 0; c < 3; ++c)
+      ASSERT_NEAR(updated.solution.radiosity[e][c], reference.solution.radiosity[e][c],
+                  1e-7 * scale);
 }
 
 TEST_F(IncrementalUpdate, UnchangedSceneReusesEveryRowAndKeepsItsSolution) {

@@ -7,6 +7,7 @@
 #include <thread>
 #include <vector>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/pipeline/kept_row_table.h"
 
@@ -55,6 +56,50 @@ TEST(KeptRowTable, TheMatrixIsFRowByRow) {
   EXPECT_EQ(f.coeff(1, 0), 0.0);
   EXPECT_EQ(f.coeff(2, 0), 0.5);
   EXPECT_EQ(copy.coeff(0, 2), f.coeff(0, 2));
+}
+
+// Many rows (the constructor copies them side by side in blocks): the same table as appending
+// them one by one, as factors.bin's reader does.
+TEST(KeptRowTable, BuiltFromRowsIsTheTableOfTheSameRowsAppended) {
+  std::vector<FormFactorRow> rows(3000);
+  KeptRowTable appended;
+  appended.reserve(rows.size(), 3000 * 7);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    for (int k = 0; k < static_cast<int>(i % 7); ++k) {
+      rows[i].targets.push_back(static_cast<int>((i * 13 + 97 * k) % 3000) / 7 * 7 + k);
+      rows[i].values.push_back(1.0 / (3.0 + static_cast<double>(i + k)));
+    }
+    std::sort(rows[i].targets.begin(), rows[i].targets.end());
+    rows[i].escaped = 0.001 * static_cast<double>(i % 11);
+    const std::vector<float> values(rows[i].values.begin(), rows[i].values.end());
+    appended.appendRow(rows[i].targets.data(), values.data(), values.size(), rows[i].escaped, {});
+  }
+  const KeptRowTable built(rows);
+  ASSERT_EQ(built.size(), appended.size());
+  ASSERT_EQ(built.factorCount(), appended.factorCount());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const FormFactorRow a = built.row(i), b = appended.row(i);
+    ASSERT_EQ(a.targets, b.targets) << i;
+    ASSERT_EQ(a.values, b.values) << i;
+    ASSERT_EQ(a.escaped, b.escaped) << i;
+  }
+}
+
+// update lends F to Gauss–Seidel and keeps the table for factors.bin: the matrix comes back as
+// it went, and the rows cannot be read while it is away.
+TEST(KeptRowTable, ALentMatrixComesBackAndTheRowsWithIt) {
+  KeptRowTable table(threeRows());
+  KeptRowTable::Matrix f = table.lendMatrix();
+  EXPECT_EQ(f.rows(), 3);
+  EXPECT_EQ(f.coeff(0, 1), 0.25);
+  EXPECT_EQ(table.size(), 3u);
+  EXPECT_THROW(table.row(0), CheckFailure);
+  EXPECT_THROW(table.lendMatrix(), CheckFailure);
+  table.returnMatrix(std::move(f));
+  EXPECT_EQ(table.row(0).targets, threeRows()[0].targets);
+  EXPECT_EQ(table.row(2).values[0], 0.5);
+  KeptRowTable::Matrix other(2, 2);
+  EXPECT_THROW(table.returnMatrix(std::move(other)), CheckFailure);
 }
 
 TEST(KeptRowTable, MovingHandsTheStorageOver) {
