@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """Incremental re-bake after a geometry edit, against solving and baking again, side by side.
 
-    python3 bench/incremental_update.py [--build build] [--rays N]
+    python3 bench/incremental_update.py [--build build] [--rays N] [--repeats 3]
 
 On the shared atrium (Sponza under the sky and sun of bench/real_scenes.sh), in a scratch copy
 under BUILD/incremental_update/ (the shared scene itself is never written):
   1. `solve --keep-factors --solver gauss-seidel` of the scene as shipped (the kept solve);
   2. the edit: a 1 m crate added on the courtyard floor, then (second round) moved 2 m along x;
-  3. per round, interleaved: `update KEPT` + `bake --solution KEPT` (incremental) against
-     `solve --keep-factors` + `bake --solution` of the edited scene from scratch (fresh);
+  3. per round, interleaved and repeated (medians): `update KEPT` + `bake --solution KEPT`
+     (incremental; KEPT restored before each repeat) against `solve --keep-factors` +
+     `bake --solution` of the edited scene from scratch (fresh);
 and prints the wall times, the rows reused, and the relative RMS difference of the two solutions
 per element, beside that of the fresh solve and one with another seed (untimed): the Monte Carlo
 noise floor, which the update stays within (elements the edit renumbers keep what was drawn under
@@ -20,6 +21,7 @@ import json
 import math
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -83,6 +85,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--rays", default="1024")
+    ap.add_argument("--repeats", type=int, default=3)
     args = ap.parse_args()
     binary = os.path.join(args.build, "bin", "radiosity")
     original = os.path.join(SCENES, "sponza-dabrovic", "sponza.obj")
@@ -105,18 +108,33 @@ def main():
     for edit, crate_x in (("crate added", -0.5), ("crate moved 2 m", 1.5)):
         write_scene(scene, original, crate_x)
         write_scene(fresh_scene, original, crate_x)
-        t_update = run(binary, ["update", kept])
-        summary = json.load(open(os.path.join(kept, "summary.json")))
+        # Each repeat updates the same kept solve (restored from a copy, untimed), interleaved
+        # with the fresh solve and bake; the medians are reported.
+        before = kept + "_before_edit"
+        shutil.rmtree(before, ignore_errors=True)
+        shutil.copytree(kept, before)
         bake = solve
-        t_rebake = run(binary, ["bake", scene, "--out", os.path.join(work, "rebaked"),
-                                "--solution", kept] + bake)
-        baked = json.load(open(os.path.join(work, "rebaked", "bake.json")))
-        if not baked["reused_saved_solution"]:
-            sys.exit("incremental_update: the re-bake did not reuse the updated solution")
         out = os.path.join(work, "fresh_out")
-        t_solve = run(binary, ["solve", fresh_scene, "--out", out, "--keep-factors"] + bake)
-        t_bake = run(binary, ["bake", fresh_scene, "--out", os.path.join(work, "fresh_baked"),
-                              "--solution", out] + bake)
+        times = {"update": [], "rebake": [], "solve": [], "bake": []}
+        for repeat in range(args.repeats):
+            shutil.rmtree(kept)
+            shutil.copytree(before, kept)
+            times["update"].append(run(binary, ["update", kept]))
+            times["rebake"].append(run(binary, ["bake", scene, "--out",
+                                                os.path.join(work, "rebaked"), "--solution",
+                                                kept] + bake))
+            baked = json.load(open(os.path.join(work, "rebaked", "bake.json")))
+            if not baked["reused_saved_solution"]:
+                sys.exit("incremental_update: the re-bake did not reuse the updated solution")
+            times["solve"].append(run(binary, ["solve", fresh_scene, "--out", out,
+                                               "--keep-factors"] + bake))
+            times["bake"].append(run(binary, ["bake", fresh_scene, "--out",
+                                              os.path.join(work, "fresh_baked"), "--solution",
+                                              out] + bake))
+        shutil.rmtree(before)
+        summary = json.load(open(os.path.join(kept, "summary.json")))
+        t_update, t_rebake, t_solve, t_bake = (statistics.median(times[k])
+                                               for k in ("update", "rebake", "solve", "bake"))
         u = summary["update"]
         difference = relative_rms(radiosity(os.path.join(kept, "elements.csv")),
                                   radiosity(os.path.join(out, "elements.csv")))
