@@ -7,6 +7,7 @@
 #include <ImfOutputFile.h>
 #include <ImfThreading.h>
 #include <tbb/global_control.h>
+#include <tbb/info.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -60,9 +61,11 @@ void writeExr(const std::string& path, const ImageRgb& image,
       frame.insert(channel.name, Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * w));
     }
     // Its ZIP compression on as many cores as the command may use (OpenEXR's own thread pool,
-    // sized to TBB's limit, which --threads sets): a page of 2.5 million texels took 0.6 s on one.
-    const int threads = static_cast<int>(std::max<size_t>(
-        1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
+    // sized to TBB's limit, which --threads sets, at most the cores): a page of 2.5 million texels
+    // took 0.6 s on one.
+    const int threads = static_cast<int>(std::clamp<size_t>(
+        tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism), 1,
+        static_cast<size_t>(tbb::info::default_concurrency())));
     {
       static std::mutex poolResize;
       const std::lock_guard<std::mutex> lock(poolResize);

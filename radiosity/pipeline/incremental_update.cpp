@@ -18,6 +18,7 @@
 #include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/edit_reach.h"
 #include "radiosity/pipeline/element_size.h"
+#include "radiosity/pipeline/fingerprint.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/mesh_stage.h"
@@ -98,8 +99,17 @@ EditBox editBox(const std::vector<std::array<Eigen::Vector3d, 3>>& region) {
   return box;
 }
 
+// Whether the scene's lights are, bit for bit, those the kept solve cast its direct light from
+// (a kept file without their fingerprint, from before it was kept, cannot say).
+bool lightsAsKept(const KeptFactors& kept, const Scene& scene) {
+  Fingerprint now;
+  addLights(now, scene.lights);
+  return !kept.lightsFingerprint.empty() && kept.lightsFingerprint == now.hex();
+}
+
 // Per light, the kept E_d of the elements whose shadow rays to it cannot meet the edit (matched,
-// with the same exposed area, so the same strata and rays).
+// with the same exposed area, so the same strata and rays). None when the lights changed: a lamp
+// moved or made brighter in the lights file changes every element's E_d from it.
 std::vector<KnownIrradiance> directLightTheEditLeaves(const KeptFactors& kept,
                                                       const Solution& solution,
                                                       const std::vector<int>& match,
@@ -108,17 +118,25 @@ std::vector<KnownIrradiance> directLightTheEditLeaves(const KeptFactors& kept,
   const int n = mesh.elementCount();
   // Far beyond the rays' lift-off (RayCaster::surfaceOffset, 1e-5 of the scene's size or less).
   const double margin = 1e-4 * mesh.boundsDiagonal();
+  const bool sameLights = lightsAsKept(kept, solution.scene);
+  if (!sameLights)
+    logInfo(
+        "update: the lights are not the kept solve's (changed in the lights file, or not "
+        "recorded): every element's direct light is cast again");
+  const bool anyEdit = (box.lo.array() <= box.hi.array()).all();
   std::vector<KnownIrradiance> known(solution.scene.lights.size());
   for (size_t l = 0; l < known.size(); ++l) {
     KnownIrradiance& k = known[l];
     k.value.assign(static_cast<size_t>(n), Rgb());
     k.known.assign(static_cast<size_t>(n), 0);
-    if (!(box.lo.array() <= box.hi.array()).all()) continue;  // no edit: every element
+    if (!sameLights) continue;
     tbb::parallel_for(0, n, [&](int e) {
       const int old = match[static_cast<size_t>(e)];
       if (old < 0 || !sameArea(solution.problem.area[e], kept.area[static_cast<size_t>(old)]))
         return;
-      if (shadowRaysMayMeet(solution.scene.lights[l], mesh.corners(e), mesh.normal(e), box, margin))
+      // Without an edit (nothing moved) every matched element's rays are as they were.
+      if (anyEdit &&
+          shadowRaysMayMeet(solution.scene.lights[l], mesh.corners(e), mesh.normal(e), box, margin))
         return;
       k.value[static_cast<size_t>(e)] = kept.lightIrradiance[l][static_cast<size_t>(old)];
       k.known[static_cast<size_t>(e)] = 1;
@@ -195,7 +213,8 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
                      "the previous solution has " + std::to_string(previous.size()) +
                          " elements, the kept factors " + std::to_string(kept.area.size()) +
                          ": not the same solve");
-  RAD_CHECK_EQ(kept.lightIrradiance.size(), started.result.solution.scene.lights.size());
+  if (kept.lightIrradiance.size() != started.result.solution.scene.lights.size())
+    throw InputError(keptPath, 0, "changed while it was read: run update again");
   SolveResult result = std::move(started.result);
   Solution& solution = result.solution;
   SolveReport& report = result.report;
@@ -250,7 +269,9 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   // exposed area and ray budget; the others are cast again.
   FormFactorStage formFactors(solution.scene, mesh, rays, solution.problem, options, &exposure,
                               rayMultipliers);
-  const TriangleSetCaster regionCaster(region, rays.centre()), oldCaster(oldPlace, rays.centre());
+  const double sceneSize = mesh.boundsDiagonal();
+  const TriangleSetCaster regionCaster(region, rays.centre(), sceneSize),
+      oldCaster(oldPlace, rays.centre(), sceneSize);
   const HemisphereFormFactors::Edit edit{regionCaster, oldCaster, moved};
   std::vector<char> reuse(static_cast<size_t>(n), 0);
   std::vector<int> changedRays(static_cast<size_t>(n), 0);

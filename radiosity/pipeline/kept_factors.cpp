@@ -346,6 +346,9 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
     reader.fail(std::to_string(n) + " elements: more than a solve makes (" +
                 std::to_string(static_cast<uint64_t>(kMaxElements)) + ")");
   kept.options.scenePath = kept.scenePath;
+  // Checked with the header: `update` meshes with it before the rest is read.
+  if (!(kept.elementEdge > 0) || !std::isfinite(kept.elementEdge))
+    reader.fail("the header's element_edge must be a positive number");
   if (parts == KeptParts::Header) return kept;
   kept.area = reader.array<double>(n, "the areas");
   for (double a : kept.area)
@@ -398,8 +401,6 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
     }
     kept.rows.appendRow(targets.data(), values.data(), count, escaped, std::move(tintedFactors));
   }
-  if (!(kept.elementEdge > 0) || !std::isfinite(kept.elementEdge))
-    reader.fail("the header's element_edge must be a positive number");
   const std::vector<double> corners = reader.array<double>(9 * n, "the mesh's corners");
   kept.corners.resize(n);
   for (size_t i = 0; i < n; ++i)

@@ -9,7 +9,7 @@
 namespace rad {
 
 TriangleSetCaster::TriangleSetCaster(const std::vector<std::array<Eigen::Vector3d, 3>>& triangles,
-                                     const Eigen::Vector3d& centre) {
+                                     const Eigen::Vector3d& centre, double sceneSize) {
   if (triangles.empty()) return;  // meets nothing
   lo_ = hi_ = triangles[0][0];
   for (const auto& t : triangles)
@@ -39,11 +39,13 @@ TriangleSetCaster::TriangleSetCaster(const std::vector<std::array<Eigen::Vector3
       for (int d = 0; d < 3; ++d) vertices[9 * t + 3 * k + d] = static_cast<float>(p[d]);
       indices[3 * t + k] = static_cast<unsigned>(3 * t + k);
     }
-  // The float box of those vertices, widened far beyond the slab test's rounding (a few float
-  // ulps of the coordinates), so that a ray it rejects cannot meet a triangle.
+  // The float box of those vertices, widened far beyond the slab test's rounding, so that a ray
+  // it rejects cannot meet a triangle: a few float ulps of the coordinates involved, the box's and
+  // the ray origins' (anywhere in the scene; a 1 mm triangle seen from 50 m away lost rays to the
+  // rounding of (lo − o) / d without the last term).
   const Eigen::Vector3d lo = lo_ - centre, hi = hi_ - centre;
   const double margin = 1e-4 * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) +
-                        1e-4 * (hi - lo).maxCoeff();
+                        1e-4 * (hi - lo).maxCoeff() + 1e-5 * std::abs(sceneSize);
   for (int d = 0; d < 3; ++d) {
     boxLo_[d] = static_cast<float>(lo[d] - margin);
     boxHi_[d] = static_cast<float>(hi[d] + margin);

@@ -15,8 +15,10 @@ namespace rad {
 // Every triangle is hit from both sides. Thread-safe for queries once constructed.
 class TriangleSetCaster {
  public:
+  // `sceneSize` (the diagonal of everything rays start from) sizes the slab test's margin: its
+  // rounding grows with the origins' distance from `centre`, not with the triangles'.
   TriangleSetCaster(const std::vector<std::array<Eigen::Vector3d, 3>>& triangles,
-                    const Eigen::Vector3d& centre);
+                    const Eigen::Vector3d& centre, double sceneSize);
   ~TriangleSetCaster();
   TriangleSetCaster(const TriangleSetCaster&) = delete;
   TriangleSetCaster& operator=(const TriangleSetCaster&) = delete;

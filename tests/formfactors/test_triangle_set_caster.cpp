@@ -49,7 +49,7 @@ TEST(TriangleSetCaster, DistancesAreTheExactFirstHitsForRaysFromEverywhere) {
     set.push_back({a, a + 0.4 * Eigen::Vector3d(unit(rng), unit(rng), 0),
                    a + 0.4 * Eigen::Vector3d(0, unit(rng), unit(rng))});
   }
-  const TriangleSetCaster caster(set, centre);
+  const TriangleSetCaster caster(set, centre, 120.0);
   ASSERT_FALSE(caster.empty());
 
   int hits = 0, checked = 0, axisRays = 0;
@@ -101,8 +101,43 @@ TEST(TriangleSetCaster, DistancesAreTheExactFirstHitsForRaysFromEverywhere) {
   EXPECT_GT(axisRays, 5000);
 }
 
+// A millimetre triangle next to the frame's centre, seen from 50 m: the slab test's rounding
+// then comes from the origins' coordinates, not the box's. Every ray must get the answer of a
+// caster whose box is so wide that the slab test rejects nothing (Embree's own, in float).
+TEST(TriangleSetCaster, ATinySetSeenFromAfarLosesNoRay) {
+  const Eigen::Vector3d centre(0, 0, 0);
+  const Triangle tiny{Eigen::Vector3d(0.001, 0.001, 0), Eigen::Vector3d(0.002, 0.001, 0),
+                      Eigen::Vector3d(0.001, 0.002, 0.0005)};
+  const TriangleSetCaster caster({tiny}, centre, 100.0), unboxed({tiny}, centre, 1e7);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int hits = 0;
+  for (int r = 0; r < 200000; ++r) {
+    const Eigen::Vector3d from =
+        Eigen::Vector3d(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5).normalized() *
+        (30 + 20 * unit(rng));
+    const double a = unit(rng) * 1.4 - 0.2, b = unit(rng) * 1.4 - 0.2;
+    const Eigen::Vector3d d = tiny[0] + a * (tiny[1] - tiny[0]) + b * (tiny[2] - tiny[0]) - from;
+    const float origin[3] = {static_cast<float>(from.x()), static_cast<float>(from.y()),
+                             static_cast<float>(from.z())};
+    const float direction[3] = {static_cast<float>(d.x()), static_cast<float>(d.y()),
+                                static_cast<float>(d.z())};
+    const float* originPtr[3] = {&origin[0], &origin[1], &origin[2]};
+    const float* directionPtr[3] = {&direction[0], &direction[1], &direction[2]};
+    float got = 0, expected = 0;
+    caster.distances(1, originPtr, directionPtr, &got);
+    unboxed.distances(1, originPtr, directionPtr, &expected);
+    hits += std::isfinite(expected);
+    ASSERT_EQ(std::isfinite(got), std::isfinite(expected)) << "ray " << r;
+    if (std::isfinite(expected)) {
+      ASSERT_EQ(got, expected) << "ray " << r;
+    }
+  }
+  EXPECT_GT(hits, 50000);
+}
+
 TEST(TriangleSetCaster, AnEmptySetMeetsNothing) {
-  const TriangleSetCaster caster({}, Eigen::Vector3d::Zero());
+  const TriangleSetCaster caster({}, Eigen::Vector3d::Zero(), 1.0);
   EXPECT_TRUE(caster.empty());
   const float zero = 0, one = 1;
   const float* o[3] = {&zero, &zero, &zero};

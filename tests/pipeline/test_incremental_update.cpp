@@ -185,6 +185,28 @@ TEST_F(IncrementalUpdate, DirectLightIsKeptOnlyWhereTheEditCannotShadowIt) {
                   1e-7 * scale);
 }
 
+// A lamp moved in the lights file (the same number of lights) with the block: the kept direct
+// light is from the old lamp, so none of it may be kept, even where the new lamp's rays miss the
+// block; every element's must be the fresh solve's.
+TEST_F(IncrementalUpdate, DirectLightIsCastAgainWhenALightChanged) {
+  const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
+  writeCornell(scene, 0);
+  const SolveResult before = runSolve(options(scene));
+  const char* const moved = R"({"lights": [{"type": "point", "position": [0.2, 0.45, 0.3],
+                                "intensity": [0.3, 0.18, 0.06]}]})";
+  writeCornell(scene, -0.05, moved);
+  writeCornell(fresh, -0.05, moved);
+  const SolveResult updated =
+      updateKeptSolve(*before.kept, "kept", before.solution.radiosity, options(scene));
+  const SolveResult reference = runSolve(options(fresh));
+  EXPECT_EQ(updated.report.update.directLightKept, 0);
+  const std::vector<Rgb>& a = updated.kept->lightIrradiance[0];
+  const std::vector<Rgb>& b = reference.kept->lightIrradiance[0];
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t e = 0; e < a.size(); ++e)
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(a[e][c], b[e][c]) << "element " << e;
+}
+
 TEST_F(IncrementalUpdate, UnchangedSceneReusesEveryRowAndKeepsItsSolution) {
   const fs::path scene = dir_ / "scene";
   writeCornell(scene, 0);
@@ -194,6 +216,9 @@ TEST_F(IncrementalUpdate, UnchangedSceneReusesEveryRowAndKeepsItsSolution) {
   EXPECT_EQ(updated.report.update.rowsReused, updated.solution.mesh->elementCount());
   EXPECT_EQ(updated.report.rowsComputed, 0);
   EXPECT_EQ(updated.report.update.moved, 0);
+  // Nothing moved and the lights are as they were: every element keeps its direct light.
+  EXPECT_EQ(updated.report.update.directLightKept, updated.solution.mesh->elementCount());
+  EXPECT_EQ(updated.report.directLightRays, 0u);
   const double scale = peak(before.solution.radiosity);
   for (size_t e = 0; e < updated.solution.radiosity.size(); ++e)
     for (int c = 0; c < 3; ++c)
