@@ -60,7 +60,7 @@ bool sunBeamMayMeet(const Light& sun, const std::array<Eigen::Vector3d, 3>& corn
   // the axis, has gone at most (along(q) + r) / cos h).
   if (along + R < -r) return false;
   const double halfAngle = 0.5 * sun.angularDiameterDegrees * M_PI / 180;
-  const double spread = std::tan(std::min(halfAngle, 0.5 * M_PI - 1e-6));
+  const double spread = std::tan(halfAngle);  // the diameter is below 90°: h below 45°
   const double lateral = (v - along * axis).norm();
   return lateral - R <= r + (along + R + r) * spread;
 }

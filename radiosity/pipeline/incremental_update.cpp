@@ -18,7 +18,6 @@
 #include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/edit_reach.h"
 #include "radiosity/pipeline/element_size.h"
-#include "radiosity/pipeline/fingerprint.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/mesh_stage.h"
@@ -89,31 +88,21 @@ void renumber(FormFactorRow& row, const std::vector<int>& newIndexOfOld) {
 
 bool sameArea(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }
 
-EditBox editBox(const std::vector<std::array<Eigen::Vector3d, 3>>& region) {
-  EditBox box{Eigen::Vector3d::Constant(HUGE_VAL), Eigen::Vector3d::Constant(-HUGE_VAL)};
-  for (const auto& t : region)
-    for (const Eigen::Vector3d& p : t) {
-      box.lo = box.lo.cwiseMin(p);
-      box.hi = box.hi.cwiseMax(p);
-    }
-  return box;
-}
-
 // Whether the scene's lights are, bit for bit, those the kept solve cast its direct light from
 // (a kept file without their fingerprint, from before it was kept, cannot say).
 bool lightsAsKept(const KeptFactors& kept, const Scene& scene) {
-  Fingerprint now;
-  addLights(now, scene.lights);
-  return !kept.lightsFingerprint.empty() && kept.lightsFingerprint == now.hex();
+  return !kept.lightsFingerprint.empty() &&
+         kept.lightsFingerprint == keptLightsFingerprint(scene.lights);
 }
 
 // Per light, the kept E_d of the elements whose shadow rays to it cannot meet the edit (matched,
-// with the same exposed area, so the same strata and rays). None when the lights changed: a lamp
-// moved or made brighter in the lights file changes every element's E_d from it.
+// with the same exposed area, so the same strata and rays), `region` holding its old and new
+// triangles. None when the lights changed: a lamp moved or made brighter in the lights file
+// changes every element's E_d from it.
 std::vector<KnownIrradiance> directLightTheEditLeaves(const KeptFactors& kept,
                                                       const Solution& solution,
                                                       const std::vector<int>& match,
-                                                      const EditBox& box) {
+                                                      const TriangleSetCaster& region) {
   const PatchMesh& mesh = *solution.mesh;
   const int n = mesh.elementCount();
   // Far beyond the rays' lift-off (RayCaster::surfaceOffset, 1e-5 of the scene's size or less).
@@ -123,7 +112,7 @@ std::vector<KnownIrradiance> directLightTheEditLeaves(const KeptFactors& kept,
     logInfo(
         "update: the lights are not the kept solve's (changed in the lights file, or not "
         "recorded): every element's direct light is cast again");
-  const bool anyEdit = (box.lo.array() <= box.hi.array()).all();
+  const EditBox box{region.boundsMin(), region.boundsMax()};
   std::vector<KnownIrradiance> known(solution.scene.lights.size());
   for (size_t l = 0; l < known.size(); ++l) {
     KnownIrradiance& k = known[l];
@@ -135,7 +124,7 @@ std::vector<KnownIrradiance> directLightTheEditLeaves(const KeptFactors& kept,
       if (old < 0 || !sameArea(solution.problem.area[e], kept.area[static_cast<size_t>(old)]))
         return;
       // Without an edit (nothing moved) every matched element's rays are as they were.
-      if (anyEdit &&
+      if (!region.empty() &&
           shadowRaysMayMeet(solution.scene.lights[l], mesh.corners(e), mesh.normal(e), box, margin))
         return;
       k.value[static_cast<size_t>(e)] = kept.lightIrradiance[l][static_cast<size_t>(old)];
@@ -255,10 +244,13 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   const ElementExposure exposure = solveExposure(options, mesh, rays);
   report.exposureProbeRays = exposure.probeRays();
   solution.problem = makeProblem(solution.scene, mesh, &exposure);
+  const double sceneSize = mesh.boundsDiagonal();
+  const TriangleSetCaster regionCaster(region, rays.centre(), sceneSize),
+      oldCaster(oldPlace, rays.centre(), sceneSize);
   // The lights' first shot: an element that stayed put, with the same exposed area, whose shadow
   // rays to a light cannot meet the edit keeps the E_d the kept solve computed.
   const std::vector<KnownIrradiance> knownDirect =
-      directLightTheEditLeaves(kept, solution, match, editBox(region));
+      directLightTheEditLeaves(kept, solution, match, regionCaster);
   for (const KnownIrradiance& k : knownDirect)
     update.directLightKept += std::count(k.known.begin(), k.known.end(), 1);
   std::vector<int> rayMultipliers;
@@ -269,9 +261,6 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   // exposed area and ray budget; the others are cast again.
   FormFactorStage formFactors(solution.scene, mesh, rays, solution.problem, options, &exposure,
                               rayMultipliers);
-  const double sceneSize = mesh.boundsDiagonal();
-  const TriangleSetCaster regionCaster(region, rays.centre(), sceneSize),
-      oldCaster(oldPlace, rays.centre(), sceneSize);
   const HemisphereFormFactors::Edit edit{regionCaster, oldCaster, moved};
   std::vector<char> reuse(static_cast<size_t>(n), 0);
   std::vector<int> changedRays(static_cast<size_t>(n), 0);

@@ -425,6 +425,12 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
   return kept;
 }
 
+std::string keptLightsFingerprint(const std::vector<Light>& lights) {
+  Fingerprint f;
+  addLights(f, lights);
+  return f.hex();
+}
+
 std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster& rays,
                                              const SolveOptions& options,
                                              const ElementExposure& exposure, double elementEdge,
@@ -463,9 +469,7 @@ std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster
   report.directLightRays = lightRays;
   rayMultipliers = sourceRayMultipliers(solution.problem.area, sources);
   kept->lightInput = options.lights;
-  Fingerprint lights;
-  addLights(lights, scene.lights);
-  kept->lightsFingerprint = lights.hex();
+  kept->lightsFingerprint = keptLightsFingerprint(scene.lights);
   kept->rayMultiplier = rayMultipliers;
   for (int e = 0; e < mesh.elementCount(); ++e) {
     kept->corners.push_back(mesh.corners(e));

@@ -57,6 +57,9 @@ inline constexpr const char* kKeptFactorsFile = "factors.bin";
 // two-sidedness), and the mesh and ray options. Not the materials' diffuse and emission factors,
 // nor the lights (their first shot is kept, E_d per light): those are what relight changes.
 std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& options);
+// The fingerprint of the lights a kept solve cast its first shot from (KeptFactors::
+// lightsFingerprint): relight and update compare the scene's lights now against it.
+std::string keptLightsFingerprint(const std::vector<Light>& lights);
 
 // factors.bin: the line "radiosity kept factors 2", a u64 (little-endian) byte count and that
 // many bytes of JSON (scene, fingerprint, elements, lights, options, element_edge, light_input,

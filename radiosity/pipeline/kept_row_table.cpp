@@ -102,14 +102,12 @@ KeptRowTable::RowView KeptRowTable::view(size_t i) const {
 }
 
 FormFactorRow KeptRowTable::row(size_t i) const {
-  RAD_CHECK(i < size());
-  RAD_CHECK_MSG(f_.rows() == static_cast<Eigen::Index>(size()), "the matrix is lent");
+  const RowView v = view(i);
   FormFactorRow row;
-  const int begin = f_.outerIndexPtr()[i], end = f_.outerIndexPtr()[i + 1];
-  row.targets.assign(f_.innerIndexPtr() + begin, f_.innerIndexPtr() + end);
-  row.values.assign(f_.valuePtr() + begin, f_.valuePtr() + end);
-  row.tinted = tinted_[i];
-  row.escaped = escaped_[i];
+  row.targets.assign(v.targets, v.targets + v.count);
+  row.values.assign(v.values, v.values + v.count);
+  row.tinted = v.tinted;
+  row.escaped = v.escaped;
   return row;
 }
 

@@ -8,7 +8,6 @@
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
-#include "radiosity/pipeline/fingerprint.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/mesh_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
@@ -48,16 +47,13 @@ RelightStart startRelight(const KeptFactors& header, const std::string& keptPath
                          std::to_string(header.lightTypes.size()) +
                          ": relight changes lights' strengths (--override), not their number; "
                          "solve again");
-  if (!header.lightsFingerprint.empty()) {
-    Fingerprint lights;
-    addLights(lights, scene.lights);
-    if (lights.hex() != header.lightsFingerprint)
-      throw InputError(keptPath, 0,
-                       "the lights changed since `solve --keep-factors` (where they are, their "
-                       "shape or strength in the lights file or the --sky/--sun options): relight "
-                       "reuses their first shot; scale their strength with --override, or solve "
-                       "again");
-  }
+  if (!header.lightsFingerprint.empty() &&
+      keptLightsFingerprint(scene.lights) != header.lightsFingerprint)
+    throw InputError(keptPath, 0,
+                     "the lights changed since `solve --keep-factors` (where they are, their "
+                     "shape or strength in the lights file or the --sky/--sun options): relight "
+                     "reuses their first shot; scale their strength with --override, or solve "
+                     "again");
   Solution& solution = started.result.solution;
   SolveReport& report = started.result.report;
   report.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();

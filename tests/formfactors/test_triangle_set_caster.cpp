@@ -38,6 +38,21 @@ double exactDistance(const Triangle& t, const Eigen::Vector3d& o, const Eigen::V
   return dist;
 }
 
+// The caster's distance for one ray, given in the caster's frame in double and cast to float
+// as the form-factor rays are.
+float distanceOf(const TriangleSetCaster& caster, const Eigen::Vector3d& o,
+                 const Eigen::Vector3d& d) {
+  const float origin[3] = {static_cast<float>(o.x()), static_cast<float>(o.y()),
+                           static_cast<float>(o.z())};
+  const float direction[3] = {static_cast<float>(d.x()), static_cast<float>(d.y()),
+                              static_cast<float>(d.z())};
+  const float* originPtr[3] = {&origin[0], &origin[1], &origin[2]};
+  const float* directionPtr[3] = {&direction[0], &direction[1], &direction[2]};
+  float distance = 0;
+  caster.distances(1, originPtr, directionPtr, &distance);
+  return distance;
+}
+
 TEST(TriangleSetCaster, DistancesAreTheExactFirstHitsForRaysFromEverywhere) {
   // A crate-like set far from the frame's centre (as a small edit in a large scene is).
   const Eigen::Vector3d centre(0.5, -0.2, 0.1), offset(40, 3, -25);
@@ -77,15 +92,7 @@ TEST(TriangleSetCaster, DistancesAreTheExactFirstHitsForRaysFromEverywhere) {
       grazing |= std::abs(edge) < 1e-4;
     }
     if (grazing) continue;
-    const Eigen::Vector3d o = from - centre;
-    const float origin[3] = {static_cast<float>(o.x()), static_cast<float>(o.y()),
-                             static_cast<float>(o.z())};
-    const float direction[3] = {static_cast<float>(d.x()), static_cast<float>(d.y()),
-                                static_cast<float>(d.z())};
-    const float* originPtr[3] = {&origin[0], &origin[1], &origin[2]};
-    const float* directionPtr[3] = {&direction[0], &direction[1], &direction[2]};
-    float got = 0;
-    caster.distances(1, originPtr, directionPtr, &got);
+    const float got = distanceOf(caster, from - centre, d);
     ++checked;
     if (std::isfinite(nearest)) {
       ++hits;
@@ -118,15 +125,8 @@ TEST(TriangleSetCaster, ATinySetSeenFromAfarLosesNoRay) {
         (30 + 20 * unit(rng));
     const double a = unit(rng) * 1.4 - 0.2, b = unit(rng) * 1.4 - 0.2;
     const Eigen::Vector3d d = tiny[0] + a * (tiny[1] - tiny[0]) + b * (tiny[2] - tiny[0]) - from;
-    const float origin[3] = {static_cast<float>(from.x()), static_cast<float>(from.y()),
-                             static_cast<float>(from.z())};
-    const float direction[3] = {static_cast<float>(d.x()), static_cast<float>(d.y()),
-                                static_cast<float>(d.z())};
-    const float* originPtr[3] = {&origin[0], &origin[1], &origin[2]};
-    const float* directionPtr[3] = {&direction[0], &direction[1], &direction[2]};
-    float got = 0, expected = 0;
-    caster.distances(1, originPtr, directionPtr, &got);
-    unboxed.distances(1, originPtr, directionPtr, &expected);
+    const float got = distanceOf(caster, from - centre, d);
+    const float expected = distanceOf(unboxed, from - centre, d);
     hits += std::isfinite(expected);
     ASSERT_EQ(std::isfinite(got), std::isfinite(expected)) << "ray " << r;
     if (std::isfinite(expected)) {
@@ -139,12 +139,8 @@ TEST(TriangleSetCaster, ATinySetSeenFromAfarLosesNoRay) {
 TEST(TriangleSetCaster, AnEmptySetMeetsNothing) {
   const TriangleSetCaster caster({}, Eigen::Vector3d::Zero(), 1.0);
   EXPECT_TRUE(caster.empty());
-  const float zero = 0, one = 1;
-  const float* o[3] = {&zero, &zero, &zero};
-  const float* d[3] = {&one, &zero, &zero};
-  float got = 0;
-  caster.distances(1, o, d, &got);
-  EXPECT_FALSE(std::isfinite(got));
+  EXPECT_FALSE(
+      std::isfinite(distanceOf(caster, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX())));
 }
 
 }  // namespace
