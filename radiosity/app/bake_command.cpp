@@ -232,7 +232,9 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   std::string layoutRule;
   bool earlyLayout = false;
   double chartSeconds = 0;
-  if (!o.noLightmap) {
+  // With --solution nothing is solved (a solution that does not fit is refused in seconds): the
+  // charts are laid out once, on the saved solution's mesh, not on a mesh made for the plan.
+  if (!o.noLightmap && o.solutionDir.empty()) {
     const auto t = std::chrono::steady_clock::now();
     checkSceneLimits(scene);  // as the solve does before it meshes
     const LightmapLayout planned = layoutLightmap(*meshScene(scene, o.solve).mesh, o, layoutRule);

@@ -1,13 +1,16 @@
 #include "radiosity/output/elements_csv.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <ios>
+#include <iterator>
 #include <limits>
-#include <sstream>
 #include <string>
+#include <string_view>
 
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
@@ -17,28 +20,37 @@ namespace {
 
 constexpr size_t kBlockBytes = 1 << 16;
 
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> fields;
-  std::string field;
-  std::istringstream in(line);
-  while (std::getline(in, field, ',')) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
+// The comma-separated fields of one line, as views into it.
+std::vector<std::string_view> splitCsv(std::string_view line) {
+  std::vector<std::string_view> fields;
+  size_t start = 0;
+  for (size_t comma; (comma = line.find(',', start)) != std::string_view::npos; start = comma + 1)
+    fields.push_back(line.substr(start, comma - start));
+  fields.push_back(line.substr(start));
   return fields;
 }
 
-double parseNumber(const std::string& text, const std::string& file, int line) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-    throw InputError(file, line, "not a finite number: '" + text + "'");
+// A finite number, read as strtod would (leading blanks and a '+' allowed) but with
+// std::from_chars: no locale to consult per number, several times faster on large solutions.
+double parseNumber(std::string_view text, const std::string& file, int line) {
+  std::string_view digits = text;
+  while (!digits.empty() && std::isspace(static_cast<unsigned char>(digits.front())))
+    digits.remove_prefix(1);
+  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-') digits.remove_prefix(1);
+  double v = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size() ||
+      !std::isfinite(v))
+    throw InputError(file, line, "not a finite number: '" + std::string(text) + "'");
   return v;
 }
 
-int parseIndex(const std::string& text, const char* what, const std::string& file, int line) {
+int parseIndex(std::string_view text, const char* what, const std::string& file, int line) {
   const double v = parseNumber(text, file, line);
   if (!(v >= 0 && v <= std::numeric_limits<int>::max() && v == std::floor(v)))
-    throw InputError(file, line,
-                     std::string(what) + " must be a non-negative integer, not '" + text + "'");
+    throw InputError(
+        file, line,
+        std::string(what) + " must be a non-negative integer, not '" + std::string(text) + "'");
   return static_cast<int>(v);
 }
 
@@ -82,21 +94,29 @@ void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vecto
 }
 
 std::vector<ElementsCsvRow> readElementsCsv(std::istream& in, const std::string& source) {
-  std::string line;
+  // The whole file at once, split into lines here: per-line getline and per-field strings were
+  // most of the time a large solution took to read.
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::string_view rest = text;
   // A file saved with CRLF line ends reads the same.
-  auto next = [&] {
-    if (!std::getline(in, line)) return false;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+  auto next = [&](std::string_view& line) {
+    if (rest.empty()) return false;
+    const size_t end = rest.find('\n');
+    line = rest.substr(0, end);
+    rest.remove_prefix(end == std::string_view::npos ? rest.size() : end + 1);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     return true;
   };
-  if (!next() || line != kElementsCsvHeader)
+  std::string_view line;
+  if (!next(line) || line != kElementsCsvHeader)
     throw InputError(
         source, 1,
         std::string("not an elements CSV (header missing; expected '") + kElementsCsvHeader + "')");
   std::vector<ElementsCsvRow> rows;
-  for (int lineNumber = 2; next(); ++lineNumber) {
+  rows.reserve(static_cast<size_t>(std::count(text.begin(), text.end(), '\n')));
+  for (int lineNumber = 2; next(line); ++lineNumber) {
     if (line.empty()) continue;
-    const std::vector<std::string> f = splitCsv(line);
+    const std::vector<std::string_view> f = splitCsv(line);
     if (f.size() != 16)
       throw InputError(source, lineNumber,
                        "expected 16 comma-separated fields, found " + std::to_string(f.size()));

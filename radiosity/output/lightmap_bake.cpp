@@ -1,9 +1,14 @@
 #include "radiosity/output/lightmap_bake.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -77,7 +82,6 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
   map.element.assign(map.chart.size(), -1);
   map.state.assign(map.chart.size(), TexelState::Empty);
   map.dilationRadius = dilationRadius;
-  std::vector<Eigen::Vector3d> texelBarycentric(evaluate ? map.chart.size() : 0);
 
   auto value = [&](int e, const Eigen::Vector3d& b) {
     const auto& v = interpolation.triangle(e);
@@ -85,61 +89,105 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
   };
 
   const int elements = mesh.elementCount();
+  const size_t texels = map.chart.size();
   Progress progress("lightmap", 2 * static_cast<uint64_t>(elements), "element passes");
+  // Which element a texel goes to, per pass: the lowest-numbered one that accepts it, as when the
+  // elements are rasterised one after another (first element wins on a shared edge), found in
+  // parallel by an atomic minimum.
+  std::unique_ptr<std::atomic<int>[]> owner(new std::atomic<int>[texels]);
+  constexpr int kNoOwner = std::numeric_limits<int>::max();
+  auto forEachRow = [&](auto&& row) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, height, 16),
+                      [&](const tbb::blocked_range<int>& r) {
+                        for (int y = r.begin(); y != r.end(); ++y) row(y);
+                      });
+  };
   // One pass over the elements: each empty texel of an element's bounding box that
   // `weights(t, x, y, b)` accepts (t the element in texel space) takes the element, its chart,
-  // `state` and the interpolated value at the barycentric weights b it gives.
+  // `state` and the interpolated value at the barycentric weights b it gives. `weights` is a pure
+  // function of its arguments: the texel's weights are computed again where they are needed.
   auto rasterise = [&](TexelState state, auto&& weights) {
-    for (int e = 0; e < elements; ++e, progress.advance()) {
-      if (layout.page(e) != page) continue;
-      const auto& t = layout.texels[e];
-      const Vec2 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]), hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
-      const int x0 = std::max(0, static_cast<int>(std::floor(lo.x()))),
-                y0 = std::max(0, static_cast<int>(std::floor(lo.y())));
-      const int x1 = std::min(width - 1, static_cast<int>(std::floor(hi.x()))),
-                y1 = std::min(height - 1, static_cast<int>(std::floor(hi.y())));
-      for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x) {
-          const size_t i = map.index(x, y);
-          if (map.state[i] != TexelState::Empty) continue;
-          Eigen::Vector3d b;
-          if (!weights(t, x, y, b)) continue;
-          map.radiance.pixels[i] = value(e, b);
-          if (evaluate) texelBarycentric[i] = b;
-          map.chart[i] = layout.chartOfElement[e], map.element[i] = e, map.state[i] = state;
-        }
-    }
+    forEachRow([&](int y) {
+      for (int x = 0; x < width; ++x)
+        owner[map.index(x, y)].store(kNoOwner, std::memory_order_relaxed);
+    });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, elements, 256), [&](const tbb::blocked_range<int>& r) {
+          for (int e = r.begin(); e != r.end(); ++e) {
+            if (layout.page(e) != page) continue;
+            const auto& t = layout.texels[e];
+            const Vec2 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]),
+                       hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
+            const int x0 = std::max(0, static_cast<int>(std::floor(lo.x()))),
+                      y0 = std::max(0, static_cast<int>(std::floor(lo.y())));
+            const int x1 = std::min(width - 1, static_cast<int>(std::floor(hi.x()))),
+                      y1 = std::min(height - 1, static_cast<int>(std::floor(hi.y())));
+            for (int y = y0; y <= y1; ++y)
+              for (int x = x0; x <= x1; ++x) {
+                const size_t i = map.index(x, y);
+                if (map.state[i] != TexelState::Empty) continue;
+                Eigen::Vector3d b;
+                if (!weights(t, x, y, b)) continue;
+                int current = owner[i].load(std::memory_order_relaxed);
+                while (e < current &&
+                       !owner[i].compare_exchange_weak(current, e, std::memory_order_relaxed)) {
+                }
+              }
+          }
+          progress.advance(r.size());
+        });
+    forEachRow([&](int y) {
+      for (int x = 0; x < width; ++x) {
+        const size_t i = map.index(x, y);
+        const int e = owner[i].load(std::memory_order_relaxed);
+        if (e == kNoOwner) continue;
+        Eigen::Vector3d b = Eigen::Vector3d::Zero();
+        const bool accepted = weights(layout.texels[e], x, y, b);  // as in the pass: same weights
+        RAD_CHECK(accepted);
+        map.radiance.pixels[i] = value(e, b);
+        map.chart[i] = layout.chartOfElement[e], map.element[i] = e, map.state[i] = state;
+      }
+    });
   };
   // Pass 1: texel centres inside an element (first element wins on a shared edge).
-  rasterise(TexelState::Covered,
-            [](const std::array<Vec2, 3>& t, int x, int y, Eigen::Vector3d& inside) {
-              const Eigen::Vector3d b = barycentric(t, Vec2(x + 0.5, y + 0.5));
-              if (b.minCoeff() < -1e-12 || !b.allFinite()) return false;
-              inside = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
-              return true;
-            });
+  const auto centreInside = [](const std::array<Vec2, 3>& t, int x, int y,
+                               Eigen::Vector3d& inside) {
+    const Eigen::Vector3d b = barycentric(t, Vec2(x + 0.5, y + 0.5));
+    if (b.minCoeff() < -1e-12 || !b.allFinite()) return false;
+    inside = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
+    return true;
+  };
+  rasterise(TexelState::Covered, centreInside);
   // Pass 2: texels an element overlaps without holding their centre (chart borders, slivers):
   // the element's point nearest the centre.
-  rasterise(TexelState::Conservative,
-            [](const std::array<Vec2, 3>& t, int x, int y, Eigen::Vector3d& nearest) {
-              const std::array<Vec2, 3> lower{Vec2(x, y), Vec2(x + 1, y), Vec2(x + 1, y + 1)};
-              const std::array<Vec2, 3> upper{Vec2(x, y), Vec2(x + 1, y + 1), Vec2(x, y + 1)};
-              if (!trianglesOverlap2d(t, lower, 1e-9) && !trianglesOverlap2d(t, upper, 1e-9))
-                return false;
-              nearest = nearestBarycentric(t, Vec2(x + 0.5, y + 0.5));
-              return true;
-            });
+  const auto nearestToCentre = [](const std::array<Vec2, 3>& t, int x, int y,
+                                  Eigen::Vector3d& nearest) {
+    const std::array<Vec2, 3> lower{Vec2(x, y), Vec2(x + 1, y), Vec2(x + 1, y + 1)};
+    const std::array<Vec2, 3> upper{Vec2(x, y), Vec2(x + 1, y + 1), Vec2(x, y + 1)};
+    if (!trianglesOverlap2d(t, lower, 1e-9) && !trianglesOverlap2d(t, upper, 1e-9)) return false;
+    nearest = nearestBarycentric(t, Vec2(x + 0.5, y + 0.5));
+    return true;
+  };
+  rasterise(TexelState::Conservative, nearestToCentre);
   progress.finish();
   if (evaluate) {
-    Progress gathering("lightmap gather", map.chart.size(), "texels");
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, map.chart.size(), 64),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                        for (size_t i = r.begin(); i != r.end(); ++i)
-                          if (map.element[i] >= 0)
-                            map.radiance.pixels[i] =
-                                evaluate(map.element[i], texelBarycentric[i], i);
-                        gathering.advance(r.size());
-                      });
+    Progress gathering("lightmap gather", texels, "texels");
+    forEachRow([&](int y) {
+      for (int x = 0; x < width; ++x) {
+        const size_t i = map.index(x, y);
+        const int e = map.element[i];
+        if (e < 0) continue;
+        // The texel's weights again (cheaper than keeping them for every texel).
+        Eigen::Vector3d b = Eigen::Vector3d::Zero();
+        const auto& t = layout.texels[e];
+        if (map.state[i] == TexelState::Covered)
+          centreInside(t, x, y, b);
+        else
+          nearestToCentre(t, x, y, b);
+        map.radiance.pixels[i] = evaluate(e, b, i);
+      }
+      gathering.advance(static_cast<uint64_t>(width));
+    });
     gathering.finish();
   }
 
@@ -161,19 +209,26 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
           second = c;
       }
   };
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      int first, second;
-      ownCharts(x, y, first, second);
-      map.crowdedTexels += second >= 0;
-    }
+  map.crowdedTexels = tbb::parallel_reduce(
+      tbb::blocked_range<int>(0, height, 16), size_t{0},
+      [&](const tbb::blocked_range<int>& r, size_t crowded) {
+        for (int y = r.begin(); y != r.end(); ++y)
+          for (int x = 0; x < width; ++x) {
+            int first, second;
+            ownCharts(x, y, first, second);
+            crowded += second >= 0;
+          }
+        return crowded;
+      },
+      std::plus<size_t>());
 
   // Dilation, one ring at a time from a snapshot, so a ring reads only earlier rings. A texel
   // next to a chart's own texels takes that chart (bilinear lookups inside it read the texel); one
   // next to the own texels of two charts stays empty, as it cannot serve both.
   for (int ring = 0; ring < dilationRadius; ++ring) {
     const std::vector<int> chartBefore = map.chart;
-    for (int y = 0; y < height; ++y)
+    // Rows in parallel: a texel filled in this ring reads only texels filled before it.
+    forEachRow([&](int y) {
       for (int x = 0; x < width; ++x) {
         const size_t i = map.index(x, y);
         if (chartBefore[i] >= 0) continue;
@@ -201,6 +256,7 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
         map.radiance.pixels[i] = sum / n;
         map.chart[i] = chosen, map.state[i] = TexelState::Dilated;
       }
+    });
   }
   return map;
 }

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -197,12 +198,15 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   const std::string csvPath = (base / csvName).string();
 
   SolveResult result;
+  // The CSV is read on another thread while the scene is meshed: the two take about as long.
+  std::future<std::vector<ElementsCsvRow>> reading =
+      std::async(std::launch::async, [&csvPath] { return readElementsCsv(csvPath); });
   MeshedScene meshed = meshScene(solved, options);
   result.solution.mesh = std::move(meshed.mesh);
   const PatchMesh& mesh = *result.solution.mesh;
   const int count = mesh.elementCount();
   result.solution.radiosity.assign(count, Rgb());
-  const std::vector<ElementsCsvRow> rows = readElementsCsv(csvPath);
+  const std::vector<ElementsCsvRow> rows = reading.get();
   int lineNumber = 1;
   // Centroids are written with 17 significant digits: the re-meshed scene must give them back
   // to rounding, or the file belongs to another mesh.

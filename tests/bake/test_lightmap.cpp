@@ -1,6 +1,7 @@
 // Lightmap charts, packing and baking on the Cornell box mesh and on a spiral ramp whose planar
 // projection would overlap itself.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <map>
@@ -145,6 +146,64 @@ TEST(LightmapBake, EveryFaceOwnsATexel) {
   for (int id : b.map.element)
     if (id >= 0) ++owned[id];
   for (int e = 0; e < b.mesh.elementCount(); ++e) ASSERT_GE(owned[e], 1) << "element " << e;
+}
+
+// The elements are rasterised in parallel, each texel going to the lowest-numbered element that
+// claims it: the page must not depend on how many threads baked it or in which order they ran.
+TEST(LightmapBake, OneThreadAndManyBakeTheSamePage) {
+  const Baked many = bake(cornellMesh(), {0, 128, 2});  // coarse: texels shared by many elements
+  Lightmap one;
+  {
+    const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    one = bakeLightmap(many.mesh, many.layout, many.interpolation, many.vertexRadiance, 2);
+  }
+  EXPECT_EQ(one.element, many.map.element);
+  EXPECT_EQ(one.chart, many.map.chart);
+  EXPECT_TRUE(one.state == many.map.state);
+  EXPECT_EQ(one.crowdedTexels, many.map.crowdedTexels);
+  ASSERT_EQ(one.radiance.pixels.size(), many.map.radiance.pixels.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < one.radiance.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      differing += one.radiance.pixels[i][c] != many.map.radiance.pixels[i][c];
+  EXPECT_EQ(differing, 0u);
+  // The rule itself, by brute force: a covered texel belongs to the lowest-numbered element
+  // holding its centre, any other touched texel to the lowest-numbered element overlapping it;
+  // and some texels are overlapped by several elements, so the order of the elements mattered.
+  const LightmapLayout& layout = many.layout;
+  const size_t texels = many.map.element.size();
+  std::vector<int> lowestHolder(texels, -1), lowestOverlap(texels, -1), overlaps(texels, 0);
+  for (int e = 0; e < many.mesh.elementCount(); ++e) {
+    const auto& t = layout.texels[e];
+    const Vec2 lo = t[0].cwiseMin(t[1]).cwiseMin(t[2]), hi = t[0].cwiseMax(t[1]).cwiseMax(t[2]);
+    for (int y = std::max(0, int(lo.y())); y <= std::min(layout.height - 1, int(hi.y())); ++y)
+      for (int x = std::max(0, int(lo.x())); x <= std::min(layout.width - 1, int(hi.x())); ++x) {
+        const size_t i = many.map.index(x, y);
+        const Vec2 p(x + 0.5, y + 0.5);
+        const Vec2 e1 = t[1] - t[0], e2 = t[2] - t[0], d = p - t[0];
+        const double det = e1.x() * e2.y() - e1.y() * e2.x();
+        const double b1 = (d.x() * e2.y() - d.y() * e2.x()) / det,
+                     b2 = (e1.x() * d.y() - e1.y() * d.x()) / det;
+        if (std::min({1 - b1 - b2, b1, b2}) >= -1e-12 && lowestHolder[i] < 0) lowestHolder[i] = e;
+        const std::array<Vec2, 3> lower{Vec2(x, y), Vec2(x + 1, y), Vec2(x + 1, y + 1)};
+        const std::array<Vec2, 3> upper{Vec2(x, y), Vec2(x + 1, y + 1), Vec2(x, y + 1)};
+        if (trianglesOverlap2d(t, lower, 1e-9) || trianglesOverlap2d(t, upper, 1e-9)) {
+          if (lowestOverlap[i] < 0) lowestOverlap[i] = e;
+          ++overlaps[i];
+        }
+      }
+  }
+  size_t shared = 0, wrongOwner = 0;
+  for (size_t i = 0; i < texels; ++i) {
+    const TexelState state = many.map.state[i];
+    if (state == TexelState::Covered) wrongOwner += many.map.element[i] != lowestHolder[i];
+    if (state == TexelState::Conservative) {
+      wrongOwner += lowestHolder[i] >= 0 || many.map.element[i] != lowestOverlap[i];
+      shared += overlaps[i] > 1;
+    }
+  }
+  EXPECT_EQ(wrongOwner, 0u);
+  EXPECT_GT(shared, 0u);
 }
 
 TEST(LightmapBake, PaddingAtLeastDilationAndGeometryInsideItsRect) {

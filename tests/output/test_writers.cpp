@@ -440,6 +440,46 @@ TEST(ElementsCsvReader, BadInputNamesFileAndLine) {
   EXPECT_EQ(readElementsCsv(in, "sol.csv").size(), 2u);
 }
 
+// Numbers read as strtod reads them (a hand-edited file keeps working): a leading '+' and leading
+// blanks are accepted, exponents and integers written as "1.0e0" too; trailing text, a lone sign,
+// a doubled sign, hexadecimal and an empty field are refused.
+TEST(ElementsCsvReader, NumbersReadAsStrtodReadsThem) {
+  std::ostringstream good;
+  writeElementsCsv(good, unitSquare(), std::vector<Rgb>(2, Rgb::all(1)));
+  const std::string text = good.str();
+  const std::string header = text.substr(0, text.find('\n') + 1);
+  // Row 0 with its radiosity fields (10..12) replaced.
+  auto row = [&](const std::string& r, const std::string& g, const std::string& b) {
+    std::istringstream first(text.substr(header.size()));
+    std::string line;
+    std::getline(first, line);
+    std::vector<std::string> f;
+    std::istringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+    f[10] = r, f[11] = g, f[12] = b;
+    std::string out;
+    for (size_t k = 0; k < f.size(); ++k) out += (k ? "," : "") + f[k];
+    return header + out + "\n";
+  };
+  std::istringstream accepted(row("+2.5", "  3", "1.0e1"));
+  const std::vector<ElementsCsvRow> rows = readElementsCsv(accepted, "sol.csv");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].radiosity.r, 2.5);
+  EXPECT_EQ(rows[0].radiosity.g, 3.0);
+  EXPECT_EQ(rows[0].radiosity.b, 10.0);
+  for (const std::string bad : {"2.5x", "+", "+-1", "--1", "0x10", "", "1 "}) {
+    std::istringstream in(row("1", bad, "1"));
+    try {
+      readElementsCsv(in, "sol.csv");
+      ADD_FAILURE() << "no error for '" << bad << "'";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("sol.csv:2: not a finite number: '" + bad + "'"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Vertex colours PLY.
 
