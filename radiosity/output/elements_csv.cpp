@@ -30,8 +30,10 @@ std::vector<std::string_view> splitCsv(std::string_view line) {
   return fields;
 }
 
-// A finite number, read as strtod would (leading blanks and a '+' allowed) but with
-// std::from_chars: no locale to consult per number, several times faster on large solutions.
+// A finite number in decimal notation, read with std::from_chars (no locale to consult per number:
+// several times faster than strtod on large solutions). Leading blanks and a '+' are allowed, as
+// strtod allows them; hexadecimal is refused. A value beyond double's range is read by strtod, so
+// an underflow still reads as (nearly) 0 and an overflow is refused as infinite.
 double parseNumber(std::string_view text, const std::string& file, int line) {
   std::string_view digits = text;
   while (!digits.empty() && std::isspace(static_cast<unsigned char>(digits.front())))
@@ -39,7 +41,10 @@ double parseNumber(std::string_view text, const std::string& file, int line) {
   if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-') digits.remove_prefix(1);
   double v = 0;
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-  if (digits.empty() || error != std::errc() || end != digits.data() + digits.size() ||
+  const bool whole = !digits.empty() && end == digits.data() + digits.size();
+  if (whole && error == std::errc::result_out_of_range)
+    v = std::strtod(std::string(digits).c_str(), nullptr);
+  if (!whole || (error != std::errc() && error != std::errc::result_out_of_range) ||
       !std::isfinite(v))
     throw InputError(file, line, "not a finite number: '" + std::string(text) + "'");
   return v;

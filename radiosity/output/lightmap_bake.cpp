@@ -169,6 +169,7 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
     return true;
   };
   rasterise(TexelState::Conservative, nearestToCentre);
+  owner.reset();
   progress.finish();
   if (evaluate) {
     Progress gathering("lightmap gather", texels, "texels");
@@ -232,11 +233,11 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
       for (int x = 0; x < width; ++x) {
         const size_t i = map.index(x, y);
         if (chartBefore[i] >= 0) continue;
-        int owner, other;
-        ownCharts(x, y, owner, other);
+        int own, other;
+        ownCharts(x, y, own, other);
         if (other >= 0) continue;
-        int chosen = owner;
-        for (int dy = -1; dy <= 1 && owner < 0; ++dy)
+        int chosen = own;
+        for (int dy = -1; dy <= 1 && own < 0; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             const int nx = x + dx, ny = y + dy;
             if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;

@@ -1,5 +1,7 @@
 #include "radiosity/pipeline/saved_solution.h"
 
+#include <tbb/global_control.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -198,9 +200,13 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
   const std::string csvPath = (base / csvName).string();
 
   SolveResult result;
-  // The CSV is read on another thread while the scene is meshed: the two take about as long.
+  // The CSV is read on another thread while the scene is meshed (the two take about as long),
+  // unless --threads 1 asked for one thread.
+  const bool oneThread =
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) == 1;
   std::future<std::vector<ElementsCsvRow>> reading =
-      std::async(std::launch::async, [&csvPath] { return readElementsCsv(csvPath); });
+      std::async(oneThread ? std::launch::deferred : std::launch::async,
+                 [&csvPath] { return readElementsCsv(csvPath); });
   MeshedScene meshed = meshScene(solved, options);
   result.solution.mesh = std::move(meshed.mesh);
   const PatchMesh& mesh = *result.solution.mesh;

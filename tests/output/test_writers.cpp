@@ -440,9 +440,10 @@ TEST(ElementsCsvReader, BadInputNamesFileAndLine) {
   EXPECT_EQ(readElementsCsv(in, "sol.csv").size(), 2u);
 }
 
-// Numbers read as strtod reads them (a hand-edited file keeps working): a leading '+' and leading
-// blanks are accepted, exponents and integers written as "1.0e0" too; trailing text, a lone sign,
-// a doubled sign, hexadecimal and an empty field are refused.
+// Numbers in decimal notation as strtod reads them (a hand-edited file keeps working): a leading
+// '+' and leading blanks are accepted, exponents too, and a value too small for a double reads as
+// 0 as strtod gives it; trailing text, a lone or doubled sign, hexadecimal, infinities and an empty
+// field are refused.
 TEST(ElementsCsvReader, NumbersReadAsStrtodReadsThem) {
   std::ostringstream good;
   writeElementsCsv(good, unitSquare(), std::vector<Rgb>(2, Rgb::all(1)));
@@ -461,13 +462,16 @@ TEST(ElementsCsvReader, NumbersReadAsStrtodReadsThem) {
     for (size_t k = 0; k < f.size(); ++k) out += (k ? "," : "") + f[k];
     return header + out + "\n";
   };
-  std::istringstream accepted(row("+2.5", "  3", "1.0e1"));
+  std::istringstream accepted(row("+2.5", " \t3", "1.0e1") +
+                              row("1e-400", "0", "0").substr(header.size()));
   const std::vector<ElementsCsvRow> rows = readElementsCsv(accepted, "sol.csv");
-  ASSERT_EQ(rows.size(), 1u);
+  ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0].radiosity.r, 2.5);
   EXPECT_EQ(rows[0].radiosity.g, 3.0);
   EXPECT_EQ(rows[0].radiosity.b, 10.0);
-  for (const std::string bad : {"2.5x", "+", "+-1", "--1", "0x10", "", "1 "}) {
+  EXPECT_EQ(rows[1].radiosity.r, std::strtod("1e-400", nullptr));
+  EXPECT_LT(rows[1].radiosity.r, 1e-300);
+  for (const std::string bad : {"2.5x", "+", "+-1", "--1", "0x10", "", "1 ", "inf", "-1e400"}) {
     std::istringstream in(row("1", bad, "1"));
     try {
       readElementsCsv(in, "sol.csv");
