@@ -204,6 +204,17 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
                          ": not the same solve");
   if (kept.lightIrradiance.size() != started.result.solution.scene.lights.size())
     throw InputError(keptPath, 0, "changed while it was read: run update again");
+  // A material turned two-sided or given a cut-out stops other rays with no geometry moved: no
+  // edit region would hold the change.
+  for (const auto& [name, visibility] : keptMaterialVisibility(started.result.solution.scene)) {
+    const auto was = kept.materialVisibility.find(name);
+    if (was != kept.materialVisibility.end() && was->second != visibility)
+      throw InputError(keptPath, 0,
+                       "material '" + name +
+                           "' stops rays differently than when this solve was kept (its "
+                           "two-sidedness, cut-out or kind changed): update follows geometry "
+                           "edits; solve --keep-factors again");
+  }
   SolveResult result = std::move(started.result);
   Solution& solution = result.solution;
   SolveReport& report = result.report;

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <future>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <type_traits>
 
@@ -212,7 +213,45 @@ LightInput lightInputFromJson(const nlohmann::json& j, const Reader& reader) {
   return input;
 }
 
+// What of material m decides which rays it stops or bends, in two parts so that the scene's
+// fingerprint keeps the order it had before the visibility was hashed on its own (kept files
+// stay valid): its kind, specular values, two-sidedness and cut-out settings ...
+void addMaterialKind(Fingerprint& f, const Material& m) {
+  f.add(static_cast<int>(m.kind));
+  f.add(m.specular);
+  f.add(m.transmittance);
+  f.add(m.ior);
+  f.add(m.twoSided);
+  f.add(m.alphaTexture);
+  f.add(m.alphaFromDiffuse);
+  f.add(m.alphaCutoff);
+}
+
+// ... and its cut-out mask's texels (a mask texture's alpha is geometry here).
+void addCutoutMask(Fingerprint& f, const Scene& scene, const Material& m) {
+  const int mask = m.alphaTexture >= 0  ? m.alphaTexture
+                   : m.alphaFromDiffuse ? m.diffuseTexture
+                                        : -1;
+  if (mask >= 0 && mask < static_cast<int>(scene.textures.size())) {
+    const Texture& t = scene.textures[static_cast<size_t>(mask)];
+    f.add(t.width);
+    f.add(t.height);
+    for (size_t i = 0; i < t.rgba.size(); ++i) f.add(t.rgba[i]);
+  }
+}
+
 }  // namespace
+
+std::map<std::string, std::string> keptMaterialVisibility(const Scene& scene) {
+  std::map<std::string, std::string> byName;
+  for (const Material& m : scene.materials) {
+    Fingerprint f;
+    addMaterialKind(f, m);
+    addCutoutMask(f, scene, m);
+    byName[m.name] = f.hex();
+  }
+  return byName;
+}
 
 std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& o) {
   Fingerprint f;
@@ -221,26 +260,10 @@ std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& o) {
   f.add(scene.materials.size());
   for (const Material& m : scene.materials) {
     f.add(m.name);
-    f.add(static_cast<int>(m.kind));
-    f.add(m.specular);
-    f.add(m.transmittance);
-    f.add(m.ior);
-    f.add(m.twoSided);
-    f.add(m.alphaTexture);
-    f.add(m.alphaFromDiffuse);
-    f.add(m.alphaCutoff);
+    addMaterialKind(f, m);
     f.add(m.diffuseTexture);
     f.add(m.emissionTexture);
-    // A cut-out's mask decides which rays pass: its texture's alpha is geometry here.
-    const int mask = m.alphaTexture >= 0  ? m.alphaTexture
-                     : m.alphaFromDiffuse ? m.diffuseTexture
-                                          : -1;
-    if (mask >= 0 && mask < static_cast<int>(scene.textures.size())) {
-      const Texture& t = scene.textures[static_cast<size_t>(mask)];
-      f.add(t.width);
-      f.add(t.height);
-      for (size_t i = 0; i < t.rgba.size(); ++i) f.add(t.rgba[i]);
-    }
+    addCutoutMask(f, scene, m);
   }
   f.add(o.raysPerElement);
   f.add(o.maxArea);
@@ -266,8 +289,9 @@ void writeKeptFactors(std::ostream& stream, const KeptFactors& kept) {
       {"options", optionsJson(kept.options)},
       {"element_edge", kept.elementEdge},
       {"light_input", lightInputJson(kept.lightInput)},
-      {"lights_fingerprint",
-       kept.lightsFingerprint}}.dump();
+      {"lights_fingerprint", kept.lightsFingerprint},
+      {"material_visibility",
+       kept.materialVisibility}}.dump();
   out.bytes(kMagic, std::strlen(kMagic));
   put(out, static_cast<uint64_t>(header.size()));
   out.bytes(header.data(), header.size());
@@ -339,6 +363,8 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
     kept.elementEdge = header.at("element_edge").get<double>();
     kept.lightInput = lightInputFromJson(header.at("light_input"), reader);
     kept.lightsFingerprint = header.value("lights_fingerprint", std::string());
+    kept.materialVisibility =
+        header.value("material_visibility", std::map<std::string, std::string>());
   } catch (const nlohmann::json::exception& e) {
     reader.fail(std::string("the header is not the expected JSON: ") + e.what());
   }
@@ -470,6 +496,7 @@ std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster
   rayMultipliers = sourceRayMultipliers(solution.problem.area, sources);
   kept->lightInput = options.lights;
   kept->lightsFingerprint = keptLightsFingerprint(scene.lights);
+  kept->materialVisibility = keptMaterialVisibility(scene);
   kept->rayMultiplier = rayMultipliers;
   for (int e = 0; e < mesh.elementCount(); ++e) {
     kept->corners.push_back(mesh.corners(e));

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <array>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -38,6 +39,10 @@ struct KeptFactors {
   // A hash of the lights as solved (addLights): relight refuses lights that moved or changed
   // since, whose E_d the kept one no longer is. Empty in files kept before it was recorded.
   std::string lightsFingerprint;
+  // Per material name: a hash of what decides which rays it stops (keptMaterialVisibility):
+  // update refuses a material turned two-sided or given a cut-out, which changes rows without
+  // moving geometry. Empty in files kept before it was recorded.
+  std::map<std::string, std::string> materialVisibility;
   KeptRowTable rows;  // per element: its hemisphere row
 
   // For `update` after a geometry edit (incremental.h): what the mesh was, to tell which elements
@@ -57,13 +62,16 @@ inline constexpr const char* kKeptFactorsFile = "factors.bin";
 // two-sidedness), and the mesh and ray options. Not the materials' diffuse and emission factors,
 // nor the lights (their first shot is kept, E_d per light): those are what relight changes.
 std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& options);
+// Per material name, a hash of its kind, specular values, two-sidedness and cut-out mask: what
+// decides which rays it stops or bends (KeptFactors::materialVisibility).
+std::map<std::string, std::string> keptMaterialVisibility(const Scene& scene);
 // The fingerprint of the lights a kept solve cast its first shot from (KeptFactors::
 // lightsFingerprint): relight and update compare the scene's lights now against it.
 std::string keptLightsFingerprint(const std::vector<Light>& lights);
 
 // factors.bin: the line "radiosity kept factors 2", a u64 (little-endian) byte count and that
 // many bytes of JSON (scene, fingerprint, elements, lights, options, element_edge, light_input,
-// lights_fingerprint),
+// lights_fingerprint, material_visibility),
 // then little-endian arrays: area (f64 × n); per light, E_d (f64 × 3n); per element its row: u32
 // count c, u8 tinted, f64 escaped, i32 targets[c], f32 values[c], and f32 × 3c tinted values when
 // tinted; then the mesh: corners (f64 × 9n), material (i32 × n), patch (i32 × n), ray multiplier

@@ -1,7 +1,7 @@
 // `radiosity solve --keep-factors`, an edit of the scene's geometry, then `radiosity update DIR`,
 // end to end: the outputs rewritten with most rows reused, the same answer as solving the edited
-// scene afresh, a second update from the first's factors, and bad input refused with the old
-// outputs intact.
+// scene afresh, a second update from the first's factors, and bad input (among it a material
+// given a cut-out) refused with the old outputs intact.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -155,6 +155,41 @@ TEST(CliUpdate, BadInputLeavesTheOutputsAsTheyWere) {
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.stderrText.find("factors.bin"), std::string::npos) << r.stderrText;
   EXPECT_EQ(readText(kept / "elements.csv"), csv);
+  std::ofstream(kept / "factors.bin", std::ios::binary) << factors;
+  // The red wall given a cut-out mask (a 1×1 grey TGA) with no vertex moved: rays now pass where
+  // they stopped, which no edit region holds. Refused, naming the material.
+  const std::string tga = {0,
+                           0,
+                           2,
+                           0,
+                           0,
+                           0,
+                           0,
+                           0,
+                           0,
+                           0,
+                           0,
+                           0,
+                           1,
+                           0,
+                           1,
+                           0,
+                           24,
+                           0,
+                           static_cast<char>(100),
+                           static_cast<char>(100),
+                           static_cast<char>(100)};
+  std::ofstream(root / "scene" / "mask.tga", std::ios::binary) << tga;
+  std::string mtl = readText(root / "scene" / "cornell_box.mtl");
+  mtl.insert(mtl.find("\n", mtl.find("newmtl red")) + 1, "map_d mask.tga\n");
+  std::ofstream(root / "scene" / "cornell_box.mtl", std::ios::binary) << mtl;
+  r = runRadiosity("update " + kept.string());
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.stderrText.find("material 'red' stops rays differently"), std::string::npos)
+      << r.stderrText;
+  EXPECT_NE(r.stderrText.find("solve --keep-factors again"), std::string::npos) << r.stderrText;
+  EXPECT_EQ(readText(kept / "elements.csv"), csv);
+  EXPECT_EQ(readText(kept / "factors.bin"), factors);
 }
 
 }  // namespace

@@ -67,6 +67,7 @@ KeptFactors sample() {
   k.elementEdge = 0.125;
   k.lightInput.file = "lamps.lights.json";
   k.lightsFingerprint = "1f2e3d4c5b6a7980";
+  k.materialVisibility = {{"white", "0123456789abcdef"}, {"glass pane", "fedcba9876543210"}};
   k.lightInput.shortcuts = {skyLight({0.3, 0.4, 0.5}), sunLight({0.3, -1, 0.25}, {8, 7, 6})};
   for (int e = 0; e < 4; ++e) {
     k.corners.push_back(
@@ -227,6 +228,7 @@ TEST_F(KeptFactorsTest, RoundTripKeepsEveryField) {
   EXPECT_EQ(out.rayMultiplier, in.rayMultiplier);
   EXPECT_EQ(out.lightInput.file, in.lightInput.file);
   EXPECT_EQ(out.lightsFingerprint, in.lightsFingerprint);
+  EXPECT_EQ(out.materialVisibility, in.materialVisibility);
   ASSERT_EQ(out.lightInput.shortcuts.size(), 2u);
   EXPECT_EQ(out.lightInput.shortcuts[0].type, LightType::Sky);
   EXPECT_EQ(out.lightInput.shortcuts[0].radiance.g, 0.4);
@@ -289,6 +291,14 @@ TEST_F(KeptFactorsTest, BadMeshIsAnInputError) {
   EXPECT_EQ(same, bytes);
   expectRejected(withHeader(bytes, [](nlohmann::json& h) { h["element_edge"] = 0; }),
                  "element_edge");
+  expectRejected(withHeader(bytes,
+                            [](nlohmann::json& h) {
+                              h["material_visibility"] = {1, 2};
+                            }),
+                 "the header is not the expected JSON");
+  expectRejected(
+      withHeader(bytes, [](nlohmann::json& h) { h["material_visibility"]["white"] = 5; }),
+      "the header is not the expected JSON");
   expectRejected(withHeader(bytes,
                             [](nlohmann::json& h) {
                               h["light_input"]["shortcuts"][0] = {{"sky", {1, 2}}};
