@@ -181,10 +181,9 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
         // The texel's weights again (cheaper than keeping them for every texel).
         Eigen::Vector3d b = Eigen::Vector3d::Zero();
         const auto& t = layout.texels[e];
-        if (map.state[i] == TexelState::Covered)
-          centreInside(t, x, y, b);
-        else
-          nearestToCentre(t, x, y, b);
+        const bool accepted = map.state[i] == TexelState::Covered ? centreInside(t, x, y, b)
+                                                                  : nearestToCentre(t, x, y, b);
+        RAD_CHECK(accepted);
         map.radiance.pixels[i] = evaluate(e, b, i);
       }
       gathering.advance(static_cast<uint64_t>(width));
