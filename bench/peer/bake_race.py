@@ -49,7 +49,7 @@ BAKE_SCRIPT = os.path.join(race.ROOT, "bench/peer/cycles_bake.py")
 # the reference's samples per half.
 SCENES = {
     "cornell_box": {"scene": "cornell_box", "lightmap_size": 256, "level": 0.02,
-                    "radiosity": [0, 16, 64, 256, 1024], "cycles": [16, 64, 256, 1024],
+                    "radiosity": [0, 16, 64, 128, 256, 1024], "cycles": [16, 64, 256, 1024],
                     "reference_cycles": 4096},
 }
 QUICK = {"radiosity": [0, 16], "cycles": [4, 16], "reference_cycles": 64}

@@ -40,6 +40,7 @@
 #include "radiosity/render/directional_lightmap.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/render_scene.h"
+#include "radiosity/render/sobol_sampler.h"
 #include "radiosity/scene/lightmap_uv_check.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/surface_textures.h"
@@ -332,15 +333,22 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       for (int page = 0; page < layout.pages; ++page) {
         if (gather) {
           // Per-texel final gather: direct light by shadow rays to the emitters and gathered
-          // light from the solution at every texel, for shadows sharper than the elements.
+          // light from the solution at every texel, for shadows sharper than the elements. The
+          // rays leave from points spread over the texel's footprint on its element: the texel
+          // holds its box-filtered mean, as Cycles' bake and the engines' lightmappers give.
           const uint64_t seed = o.solve.seed;
           pages.push_back(bakeLightmap(
               mesh, layout, interpolation, vertexValues, o.dilation,
               [&](int e, const Eigen::Vector3d& b, size_t texel) {
-                Rng rng(streamKey(seed, 0x6c6d6170ull + page, texel));  // per texel and page
+                const uint64_t key = streamKey(seed, 0x6c6d6170ull + page, texel);  // per texel
+                Rng rng(key);
+                SobolSampler sampler(seed, key, rng);
+                sampler.startSample(0);
                 RayCounts counts;
                 Rgb standardError;  // for the confidence map
-                const Rgb out = gather->outgoingRadiance(e, b, rng, counts, standardError);
+                const TexelFootprint footprint = TexelFootprint::of(layout.texels[e], b);
+                const Rgb out =
+                    gather->outgoingRadiance(e, footprint, sampler, counts, standardError);
                 gatherError[page][texel] = standardError;
                 // Gathered at the texel with its own ρ: divide that one out.
                 const Rgb& texelLe = solution.scene.materials[mesh.material(e)].emission;

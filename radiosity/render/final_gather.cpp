@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -163,30 +164,70 @@ Rgb FinalGather::lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts,
   return s.radiance * (cosX / lightPdf * misWeight(lightPdf, gathersPerLight * cosX / M_PI) / M_PI);
 }
 
+void FinalGather::spreadOrigins(const SurfaceHit& hit, const TexelFootprint* footprint,
+                                Sampler& sampler, int count,
+                                std::vector<Eigen::Vector3d>& out) const {
+  out.clear();
+  if (footprint == nullptr || footprint->isPoint()) return;
+  thread_local std::vector<Point2> spots;
+  sampler.get2DArray(count, spots);
+  const auto c = scene_.mesh().corners(hit.element);
+  out.resize(count);
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector3d b = footprint->at(spots[k].x, spots[k].y);
+    out[k] = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
+  }
+}
+
 Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
-                             Rgb* variance) const {
+                             Rgb* variance, const TexelFootprint* footprint) const {
   thread_local std::vector<Point2> points;
+  thread_local std::vector<Eigen::Vector3d> origins;
+  SurfaceHit at = hit;  // where each sample leaves from: hit, or its own point of the footprint
   const int n = lightRays();
   sampler.get2DArray(n, points);
+  spreadOrigins(hit, footprint, sampler, n, origins);
   Rgb sum, squares;
   const double gathersPerLight = double(options_.gatherRays) / n;
   for (int k = 0; k < n; ++k) {
-    const Rgb v = lightSample(hit, points[k], counts, gathersPerLight);
+    if (!origins.empty()) at.position = origins[k];
+    const Rgb v = lightSample(at, points[k], counts, gathersPerLight);
     sum += v;
     if (variance) squares += v * v;
   }
   if (variance) *variance += varianceOfMean(sum, squares, n);
   sum = sum / n;
-  // The point, spot, directional and sky lights: the delta ones once (exact), the sun's disc and
-  // the sky by n samples each, stratified, in the same MIS pair with the gather rays.
+  // The point, spot, directional and sky lights: the delta ones once (exact) at one point, at
+  // about n / (their count) points over a footprint (so about n shadow rays in all); the sun's
+  // disc and the sky by n samples each, stratified, in the same MIS pair with the gather rays.
   const SceneLights& lights = scene_.lights();
   if (lights.empty()) return sum;  // irradiance / π: times ρ it is the reflected radiance
-  Rgb fromLights = lights.deltaIrradiance(scene_, hit, counts);
+  Rgb fromLights;
+  const int deltaPoints = std::max(1, n / std::max(1, lights.deltaCount()));
+  if (lights.deltaCount() > 0)
+    spreadOrigins(hit, footprint, sampler, deltaPoints, origins);
+  else
+    origins.clear();
+  if (origins.empty()) {
+    fromLights = lights.deltaIrradiance(scene_, hit, counts);
+  } else {
+    Rgb delta, deltaSquares;
+    for (int k = 0; k < deltaPoints; ++k) {
+      at.position = origins[k];
+      const Rgb v = lights.deltaIrradiance(scene_, at, counts);
+      delta += v;
+      if (variance) deltaSquares += v * v;
+    }
+    if (variance) *variance += varianceOfMean(delta, deltaSquares, deltaPoints) / (M_PI * M_PI);
+    fromLights = delta / deltaPoints;
+  }
   for (int a = 0; a < lights.areaCount(); ++a) {
     sampler.get2DArray(n, points);
+    spreadOrigins(hit, footprint, sampler, n, origins);
     Rgb area, areaSquares;
     for (int k = 0; k < n; ++k) {
-      const Rgb v = lights.sampleArea(a, scene_, hit, points[k], counts, gathersPerLight);
+      if (!origins.empty()) at.position = origins[k];
+      const Rgb v = lights.sampleArea(a, scene_, at, points[k], counts, gathersPerLight);
       area += v;
       if (variance) areaSquares += v * v;
     }
@@ -197,14 +238,18 @@ Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts&
 }
 
 Rgb FinalGather::gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
-                             Rgb* variance) const {
+                             Rgb* variance, const TexelFootprint* footprint) const {
   thread_local std::vector<Point2> points;
+  thread_local std::vector<Eigen::Vector3d> origins;
+  SurfaceHit at = hit;
   const int n = options_.gatherRays;
   sampler.get2DArray(n, points);
+  spreadOrigins(hit, footprint, sampler, n, origins);
   Rgb sum, squares;
   for (int k = 0; k < n; ++k) {
+    if (!origins.empty()) at.position = origins[k];
     const Eigen::Vector3d d = cosineDirection(hit.normal, points[k].x, points[k].y);
-    const Rgb v = secondaryRadiance(hit, d, sampler.rng(), counts, true);
+    const Rgb v = secondaryRadiance(at, d, sampler.rng(), counts, true);
     sum += v;
     if (variance) squares += v * v;
   }
@@ -292,8 +337,22 @@ Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& barycentri
 
 Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& barycentric, Rng& rng,
                                   RayCounts& counts, Rgb& standardError) const {
+  TexelFootprint point;
+  point.centre = barycentric;
+  return outgoingRadiance(element, point, rng, counts, standardError);
+}
+
+Rgb FinalGather::outgoingRadiance(int element, const TexelFootprint& footprint, Rng& rng,
+                                  RayCounts& counts, Rgb& standardError) const {
+  RandomSampler sampler(rng);
+  return outgoingRadiance(element, footprint, sampler, counts, standardError);
+}
+
+Rgb FinalGather::outgoingRadiance(int element, const TexelFootprint& footprint, Sampler& sampler,
+                                  RayCounts& counts, Rgb& standardError) const {
   const PatchMesh& mesh = scene_.mesh();
   const auto c = mesh.corners(element);
+  const Eigen::Vector3d& barycentric = footprint.centre;
   SurfaceHit hit;
   hit.element = element;
   hit.position = barycentric[0] * c[0] + barycentric[1] * c[1] + barycentric[2] * c[2];
@@ -307,12 +366,11 @@ Rgb FinalGather::outgoingRadiance(int element, const Eigen::Vector3d& barycentri
   standardError = Rgb();
   if (m.isSpecular()) return {};
   if (hit.diffuse.maxComponent() == 0) return m.emission;
-  RandomSampler sampler(rng);
   Rgb variance;
   // The gather rays draw from the rng first, then the shadow rays: the order GCC gave the
   // unsequenced sum `directLight(…) + gatherLight(…)` this was before, so bakes stay bit for bit.
-  const Rgb gathered = gatherLight(hit, sampler, counts, &variance);
-  const Rgb direct = directLight(hit, sampler, counts, &variance);
+  const Rgb gathered = gatherLight(hit, sampler, counts, &variance, &footprint);
+  const Rgb direct = directLight(hit, sampler, counts, &variance, &footprint);
   for (int k = 0; k < 3; ++k) standardError[k] = hit.diffuse[k] * std::sqrt(variance[k]);
   return m.emission + hit.diffuse * (direct + gathered);
 }

@@ -4,6 +4,7 @@
 
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/render/integrator.h"
+#include "radiosity/render/texel_footprint.h"
 #include "radiosity/visibility/element_exposure.h"
 
 namespace rad {
@@ -53,14 +54,33 @@ class FinalGather : public Integrator {
   // a factor √(n/(n−1))). 0 where nothing is sampled (a delta light alone, ρ = 0).
   Rgb outgoingRadiance(int element, const Eigen::Vector3d& barycentric, Rng& rng, RayCounts& counts,
                        Rgb& standardError) const;
+  // The same over a lightmap texel's footprint on the element: every shadow and gather ray (and
+  // each delta light's share of them) leaves from its own point, stratified over the texel, so
+  // the value is the texel's box-filtered mean, not its centre's (a shadow edge or the light's
+  // fall-off inside the texel averaged as Cycles' bake averages them). ρ is the centre's, as
+  // with one point. A footprint that is a point gives the value above, bit for bit.
+  Rgb outgoingRadiance(int element, const TexelFootprint& footprint, Rng& rng, RayCounts& counts,
+                       Rgb& standardError) const;
+  // The same with its points drawn from `sampler` (a texel's SobolSampler: its N rays of each
+  // kind one stratified set); `standardError` still treats them as independent, so where the
+  // stratification helps it overstates the error.
+  Rgb outgoingRadiance(int element, const TexelFootprint& footprint, Sampler& sampler,
+                       RayCounts& counts, Rgb& standardError) const;
 
  private:
   Rgb interpolatedRadiance(const SurfaceHit& hit) const;  // B/π at the hit, from vertex values
   // `variance`, when given, gains the variance of each estimate's mean (s²/n per channel).
+  // `footprint`, when given, spreads the samples' origins over it (see outgoingRadiance).
   Rgb directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
-                  Rgb* variance = nullptr) const;  // ∫ L_e cos dω / π
+                  Rgb* variance = nullptr,
+                  const TexelFootprint* footprint = nullptr) const;  // ∫ L_e cos dω / π
   Rgb gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
-                  Rgb* variance = nullptr) const;  // mean incoming reflected L
+                  Rgb* variance = nullptr,
+                  const TexelFootprint* footprint = nullptr) const;  // mean incoming reflected L
+  // `count` positions on hit's element spread over `footprint` (n-rooks stratified) into `out`;
+  // none, and nothing drawn from `sampler`, when there is no footprint or it is a point.
+  void spreadOrigins(const SurfaceHit& hit, const TexelFootprint* footprint, Sampler& sampler,
+                     int count, std::vector<Eigen::Vector3d>& out) const;
   // One shadow ray to the point `u` picks on the emitters: its irradiance / π, MIS-weighted
   // against a cosine-sampled ray.
   // `gathersPerLight`: cosine rays per shadow ray in the MIS pair (power heuristic with counts).

@@ -48,6 +48,7 @@ class SceneLights {
   // estimate of its irradiance at `hit` (W/m²), MIS-weighted against `bsdfPerLight` cosine rays
   // per light sample (0: no such rays, weight 1).
   int areaCount() const { return static_cast<int>(areaLights_.size()); }
+  int deltaCount() const { return static_cast<int>(deltaLights_.size()); }
   Rgb sampleArea(int k, const RenderScene& scene, const SurfaceHit& hit, Point2 u,
                  RayCounts& counts, double bsdfPerLight, double time = 0) const;
   // All lights at `hit`: the delta lights plus one sample of each area light (a 2D point each

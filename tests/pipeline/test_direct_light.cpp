@@ -21,32 +21,17 @@
 #include "radiosity/scene/scene.h"
 #include "tests/support/clear_sky_reference.h"
 #include "tests/support/hdr_writer.h"
+#include "tests/support/test_scenes.h"
 
 namespace rad {
 namespace {
 
 const Rgb kRho{0.5, 0.4, 0.3};
 
-// Adds a one-sided quad (corners counter-clockwise seen from the front) with material `material`.
-void addQuad(Scene& scene, std::vector<Eigen::Vector3d> corners, int material = 0) {
-  ScenePolygon polygon;
-  for (const auto& c : corners) {
-    polygon.vertices.push_back(static_cast<int>(scene.positions.size()));
-    scene.positions.push_back(c);
-  }
-  polygon.material = material;
-  scene.polygons.push_back(polygon);
-}
+Scene sceneWith(const std::vector<Light>& lights) { return testing::greyScene(kRho, lights); }
 
-Scene sceneWith(const std::vector<Light>& lights) {
-  Scene scene;
-  scene.sourcePath = "test";
-  Material grey;
-  grey.name = "grey";
-  grey.diffuse = kRho;
-  scene.materials.push_back(grey);
-  scene.lights = lights;
-  return scene;
+void addQuad(Scene& scene, const std::vector<Eigen::Vector3d>& corners, int material = 0) {
+  testing::addPolygon(scene, corners, material);
 }
 
 // The floor y = 0 over [-1, 1]², facing up.
