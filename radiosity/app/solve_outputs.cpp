@@ -168,6 +168,8 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
                             {"rows_reused", r.update.rowsReused},
                             {"rows_updated_ray_by_ray", r.update.rowsUpdated},
                             {"rays_changed", r.update.raysChanged},
+                            {"rays_tested", r.update.raysTested},
+                            {"rays_of_kept_rows", r.update.raysOfKeptRows},
                             {"rows_cast_again", r.rowsComputed},
                             {"rows_with_other_exposure_or_budget", r.update.rowsOtherChange},
                             {"direct_light_kept", r.update.directLightKept},

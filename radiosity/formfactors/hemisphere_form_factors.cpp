@@ -7,6 +7,7 @@
 #include <limits>
 #include <numeric>
 #include <string>
+#include <unordered_map>
 
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
@@ -40,6 +41,16 @@ namespace {
 // come straight from (row key, ray index), on any thread, in any order.
 inline uint64_t splitMix(uint64_t key, uint64_t k) {
   return mix64(key + k * 0x9e3779b97f4a7c15ull);
+}
+// Ray k's 23 random bits for each of its four uniforms, into slot i of a ray block.
+template <class Block>
+inline void drawJitter(uint64_t key, int k, Block& b, int i) {
+  const uint64_t h0 = splitMix(key, 2 * static_cast<uint64_t>(k));
+  const uint64_t h1 = splitMix(key, 2 * static_cast<uint64_t>(k) + 1);
+  b.jitter[0][i] = static_cast<int32_t>(h0 >> 41);
+  b.jitter[1][i] = static_cast<int32_t>((h0 & 0xffffffffu) >> 9);
+  b.jitter[2][i] = static_cast<int32_t>(h1 >> 41);
+  b.jitter[3][i] = static_cast<int32_t>((h1 & 0xffffffffu) >> 9);
 }
 // Uniform integer in [0, n) without a division in the common case (Lemire 2019, unbiased).
 inline uint32_t below(Rng& rng, uint32_t n) {
@@ -144,22 +155,40 @@ void HemisphereFormFactors::RowSampler::fill(int begin, RayBlock& b) const {
     x = begin - y * grid_;
   }
   for (int i = 0; i < n; ++i) {
-    const uint64_t h0 = splitMix(key_, 2 * static_cast<uint64_t>(begin + i));
-    const uint64_t h1 = splitMix(key_, 2 * static_cast<uint64_t>(begin + i) + 1);
-    b.jitter[0][i] = static_cast<int32_t>(h0 >> 41);
-    b.jitter[1][i] = static_cast<int32_t>((h0 & 0xffffffffu) >> 9);
-    b.jitter[2][i] = static_cast<int32_t>(h1 >> 41);
-    b.jitter[3][i] = static_cast<int32_t>((h1 & 0xffffffffu) >> 9);
+    drawJitter(key_, begin + i, b, i);
     b.directionCell[i] = y << 16 | x;
     if (++x == grid_) {
       x = 0;
       ++y;
     }
   }
+  placeRays(b, stratified, positionCell_.data() + begin);
+}
+
+void HemisphereFormFactors::RowSampler::fillRays(const int* rays, RayBlock& b) const {
+  const int n = b.count;
+  const int cells = grid_ * grid_;
+  int stratified = 0;  // the rays of the grid come first: `rays` increases
+  alignas(64) int32_t positionCell[RayBlock::kSize];
+  for (int i = 0; i < n; ++i) {
+    const int k = rays[i];
+    drawJitter(key_, k, b, i);
+    if (k < cells) {
+      const int y = k / grid_;
+      b.directionCell[i] = y << 16 | (k - y * grid_);
+      positionCell[i] = positionCell_[k];
+      stratified = i + 1;
+    }
+  }
+  placeRays(b, stratified, positionCell);
+}
+
+void HemisphereFormFactors::RowSampler::placeRays(RayBlock& b, int stratified,
+                                                  const int* positionCell) const {
+  const int n = b.count;
   // (2j + 1) / 2^24: exact in float, strictly inside (0, 1).
   constexpr float kUnit = 1.0f / 16777216.0f;
   const float inverseGrid = static_cast<float>(inverseGrid_);
-  const int* positionCell = positionCell_.data() + begin;
   for (int i = 0; i < stratified; ++i) {
     const int32_t d = b.directionCell[i], p = positionCell[i];
     b.u[0][i] =
@@ -264,10 +293,83 @@ std::vector<RowRay> HemisphereFormFactors::traceRow(int element) const {
   return rays;
 }
 
+namespace {
+
+// The direction strata of a g×g grid (RowSampler: x over cos²θ, y over the azimuth's turn) as
+// cones in the element's frame (x tangent, y bitangent, z normal): each stratum's centre
+// direction and the sine and cosine of the widest angle from it to the stratum (its corners and
+// edge midpoints, where that angle is largest for strata this small), padded for the rays' float
+// rounding. Stratum k = y·g + x, as ray k's.
+struct StratumCone {
+  double x, y, z, cosRadius, sinRadius;
+};
+const std::vector<StratumCone>& strataCones(int g) {
+  thread_local std::unordered_map<int, std::vector<StratumCone>> byGrid;  // a few sizes a scene
+  std::vector<StratumCone>& cones = byGrid[g];
+  if (!cones.empty()) return cones;
+  auto direction = [](double u0, double u1) {
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - u0));
+    return Eigen::Vector3d(sinTheta * std::cos(2 * M_PI * u1), sinTheta * std::sin(2 * M_PI * u1),
+                           std::sqrt(u0));
+  };
+  cones.resize(static_cast<size_t>(g) * g);
+  for (int y = 0; y < g; ++y)
+    for (int x = 0; x < g; ++x) {
+      const Eigen::Vector3d c = direction((x + 0.5) / g, (y + 0.5) / g);
+      double radius = 0;
+      for (int i = 0; i <= 2; ++i)
+        for (int j = 0; j <= 2; ++j)
+          radius = std::max(
+              radius, std::acos(std::clamp(c.dot(direction((x + 0.5 * i) / g, (y + 0.5 * j) / g)),
+                                           -1.0, 1.0)));
+      radius = 1.02 * radius + 2e-3;
+      cones[static_cast<size_t>(y) * g + x] = {c.x(), c.y(), c.z(), std::cos(radius),
+                                               std::sin(radius)};
+    }
+  return cones;
+}
+
+}  // namespace
+
+bool HemisphereFormFactors::raysAimedAt(int element, const RowSampler& sampler,
+                                        const TriangleSetCaster& region,
+                                        std::vector<int>& rays) const {
+  const int g = sampler.grid();
+  if (g <= 0 || sampler.count() != g * g) return false;  // rays past the grid: no strata
+  // Every ray leaves from the element's bounding sphere (lifted off it by far less than the
+  // margin); one that meets the region's bounding sphere points within α of the line between
+  // the centres, sin α = (r_element + r_region) / distance, when the spheres are at least twice
+  // that sum apart (nearer, rays leaving away from the region could still graze it).
+  const auto corners = mesh_.corners(element);
+  const Eigen::Vector3d centre = (corners[0] + corners[1] + corners[2]) / 3;
+  double radius = 0;
+  for (const auto& c : corners) radius = std::max(radius, (c - centre).norm());
+  const Eigen::Vector3d regionCentre = 0.5 * (region.boundsMin() + region.boundsMax());
+  radius += 0.5 * (region.boundsMax() - region.boundsMin()).norm() + 1e-4 * mesh_.boundsDiagonal();
+  const Eigen::Vector3d toRegion = regionCentre - centre;
+  const double distance = toRegion.norm();
+  if (!(distance >= 2 * radius)) return false;
+  const double sinAlpha = radius / distance, cosAlpha = std::sqrt(1 - sinAlpha * sinAlpha);
+  const Frame frame(normals_[element]);
+  const Eigen::Vector3d axis = toRegion / distance;
+  const double ax = axis.dot(frame.tangent), ay = axis.dot(frame.bitangent),
+               az = axis.dot(frame.normal);
+  const std::vector<StratumCone>& cones = strataCones(g);
+  rays.clear();
+  for (int k = 0; k < g * g; ++k) {
+    const StratumCone& s = cones[static_cast<size_t>(k)];
+    // Within α + ρ of the axis: cos(angle) >= cos(α + ρ) (α + ρ < π: α ≤ 30°, ρ small).
+    if (s.x * ax + s.y * ay + s.z * az >= cosAlpha * s.cosRadius - sinAlpha * s.sinRadius)
+      rays.push_back(k);
+  }
+  return true;
+}
+
 bool HemisphereFormFactors::updateRow(int element, FormFactorRow& row, const Edit& edit,
-                                      int& changedRays) const {
+                                      int& changedRays, int& testedRays) const {
   RAD_CHECK_MSG(options_.specular.empty(), "rows through mirrors and glass are not updated");
   changedRays = 0;
+  testedRays = 0;
   if (edit.region.empty()) return true;
   // Rays leave into the element's front half-space only: a region wholly behind its plane (every
   // corner of its bounds) is never met.
@@ -300,16 +402,18 @@ bool HemisphereFormFactors::updateRow(int element, FormFactorRow& row, const Edi
   float o[3][RayBlock::kSize], d[3][RayBlock::kSize], near[RayBlock::kSize];
   float meetDistance[RayBlock::kSize], hitDistance[RayBlock::kSize];
   int hit[RayBlock::kSize];
-  for (int begin = 0; begin < sampler.count(); begin += RayBlock::kSize) {
-    b.count = std::min(RayBlock::kSize, sampler.count() - begin);
-    sampler.fill(begin, b);
+  // The rays of a filled block that meet the region no farther than their first hit: their old
+  // and new targets into `changed`; `countRays`: the block's exposed rays add to `counted`.
+  auto examine = [&](bool countRays) {
     const float* origin[3] = {b.castOrigin[0], b.castOrigin[1], b.castOrigin[2]};
     const float* direction[3] = {b.direction[0], b.direction[1], b.direction[2]};
     edit.region.distances(b.count, origin, direction, regionDistance);
     int m = 0;
     for (int i = 0; i < b.count; ++i) {
-      if (partlyBuried && options_.exposure->buried(element, b.u[2][i], b.u[3][i])) continue;
-      ++counted;
+      if (countRays) {
+        if (partlyBuried && options_.exposure->buried(element, b.u[2][i], b.u[3][i])) continue;
+        ++counted;
+      }
       if (!std::isfinite(regionDistance[i])) continue;
       for (int k = 0; k < 3; ++k) {
         o[k][m] = b.castOrigin[k][i];
@@ -317,7 +421,7 @@ bool HemisphereFormFactors::updateRow(int element, FormFactorRow& row, const Edi
       }
       meetDistance[m++] = regionDistance[i];
     }
-    if (m == 0) continue;
+    if (m == 0) return;
     const float* mo[3] = {o[0], o[1], o[2]};
     const float* md[3] = {d[0], d[1], d[2]};
     rays_.closestHits(m, mo, md, hit, hitDistance);
@@ -344,14 +448,34 @@ bool HemisphereFormFactors::updateRow(int element, FormFactorRow& row, const Edi
       const int oldTarget = oldDistance[i] < fixedDistance ? kRemoved : front(fixedHit, i);
       if (oldTarget != newTarget) changed.push_back({oldTarget, newTarget});
     }
+  };
+  std::vector<int> aimed;
+  if (partlyBuried || !raysAimedAt(element, sampler, edit.region, aimed)) {
+    // Every ray may meet the region: all of them, counting the exposed ones.
+    for (int begin = 0; begin < sampler.count(); begin += RayBlock::kSize) {
+      b.count = std::min(RayBlock::kSize, sampler.count() - begin);
+      sampler.fill(begin, b);
+      testedRays += b.count;
+      examine(true);
+    }
+  } else {
+    // Only the rays whose direction stratum points at the region; the element has no buried
+    // part, so every ray counts.
+    counted = sampler.count();
+    for (size_t begin = 0; begin < aimed.size(); begin += RayBlock::kSize) {
+      b.count = static_cast<int>(std::min<size_t>(RayBlock::kSize, aimed.size() - begin));
+      sampler.fillRays(aimed.data() + begin, b);
+      testedRays += b.count;
+      examine(false);
+    }
   }
   changedRays = static_cast<int>(changed.size());
   if (changed.empty()) return true;
   // Counts from the row's fractions (exact: count / counted is what assemble stored), changed,
   // and back to fractions as assemble writes them.
   const double perRay = counted > 0 ? 1.0 / counted : 0.0;
-  std::vector<std::pair<int, int64_t>> counts;  // target, count; target -1: escaped
-  counts.reserve(row.targets.size() + changed.size() + 1);
+  std::vector<std::pair<int, int64_t>> counts;                  // target, count; target -1: escaped
+  counts.reserve(row.targets.size() + 2 * changed.size() + 1);  // each change: -1 and +1
   counts.emplace_back(-1, std::llround(row.escaped * counted));
   for (size_t k = 0; k < row.targets.size(); ++k)
     counts.emplace_back(row.targets[k], std::llround(row.values[k] * counted));

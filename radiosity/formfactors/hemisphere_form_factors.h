@@ -76,8 +76,10 @@ class HemisphereFormFactors {
   // element itself did not move and its exposed cells are the same. `changedRays` counts the rays
   // whose hit changed. Returns false when a count would fall below zero (a tie between old and
   // new hits at float precision): cast the row again. Scenes with mirrors or glass: rays continue
-  // past their first hit, so not answered (RAD_CHECK).
-  bool updateRow(int element, FormFactorRow& row, const Edit& edit, int& changedRays) const;
+  // past their first hit, so not answered (RAD_CHECK). Only the rays whose direction stratum can
+  // point at the region from the element are made at all: `testedRays` counts them.
+  bool updateRow(int element, FormFactorRow& row, const Edit& edit, int& changedRays,
+                 int& testedRays) const;
   int raysForRow(int element) const {
     return options_.rayMultiplier.empty()
                ? options_.raysPerElement
@@ -103,10 +105,19 @@ class HemisphereFormFactors {
    public:
     RowSampler(const HemisphereFormFactors& owner, int element, std::vector<int>& positionCell);
     int count() const { return count_; }
+    // Side of the g×g jittered grid of direction strata: ray k < g² has the stratum
+    // (x, y) = (k mod g, k div g), x over cos²θ and y over the azimuth's turn.
+    int grid() const { return grid_; }
     // Rays begin … begin + block.count - 1, in the caster's frame (see RayCaster::centre()).
     void fill(int begin, RayBlock& block) const;
+    // Rays rays[0] … rays[block.count - 1] (increasing), the same rays fill makes for them.
+    void fillRays(const int* rays, RayBlock& block) const;
 
    private:
+    // The uniforms, directions and origins of a block whose jitters and direction strata are set:
+    // its first `stratified` rays in the grid, with position strata positionCell[0 …].
+    void placeRays(RayBlock& block, int stratified, const int* positionCell) const;
+
     int count_, grid_ = 0;
     double inverseGrid_ = 0;
     std::array<float, 3> tangent_, bitangent_, normal_;  // the element's frame, as Embree's floats
@@ -116,6 +127,12 @@ class HemisphereFormFactors {
     std::vector<int>& positionCell_;  // ray k's position stratum, y << 16 | x
     uint64_t key_ = 0;
   };
+  // The rays of `sampler` (element's row) whose direction stratum can point at `region` from
+  // some point of the element, into `rays` (increasing); false when no ray can be ruled out so
+  // (the region within twice the two bounding spheres' radii, or rays past the grid). The others
+  // cannot meet it: updateRow need not make them.
+  bool raysAimedAt(int element, const RowSampler& sampler, const TriangleSetCaster& region,
+                   std::vector<int>& rays) const;
   // Each ray's first hit in a cast block: the element whose front it hit first, -1, or
   // kBuriedOrigin for a ray that left a buried part of the element (not counted in the row).
   static constexpr int kBuriedOrigin = -2;

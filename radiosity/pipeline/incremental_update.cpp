@@ -274,7 +274,7 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
                               rayMultipliers);
   const HemisphereFormFactors::Edit edit{regionCaster, oldCaster, moved};
   std::vector<char> reuse(static_cast<size_t>(n), 0);
-  std::vector<int> changedRays(static_cast<size_t>(n), 0);
+  std::vector<int> changedRays(static_cast<size_t>(n), 0), raysTested(static_cast<size_t>(n), 0);
   std::vector<FormFactorRow> rows(static_cast<size_t>(n));
   t = Clock::now();
   std::vector<int> candidates;
@@ -288,25 +288,27 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
     }
     candidates.push_back(e);
   }
-  uint64_t testedRays = 0;
-  for (int e : candidates) testedRays += formFactors.hemisphere().raysForRow(e);
-  Progress progress("rays tested against the edit", testedRays, "rays");
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, candidates.size(), 16),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t k = range.begin(); k != range.end(); ++k) {
-                        const int e = candidates[k];
-                        FormFactorRow row =
-                            kept.rows.row(static_cast<size_t>(match[static_cast<size_t>(e)]));
-                        renumber(row, newIndexOfOld);
-                        if (formFactors.hemisphere().updateRow(e, row, edit, changedRays[e])) {
-                          rows[static_cast<size_t>(e)] = std::move(row);
-                          reuse[static_cast<size_t>(e)] = 1;
-                        }
-                        progress.advance(formFactors.hemisphere().raysForRow(e));
-                      }
-                    });
+  uint64_t candidateRays = 0;
+  for (int e : candidates) candidateRays += formFactors.hemisphere().raysForRow(e);
+  Progress progress("rays of the kept rows examined", candidateRays, "rays");
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, candidates.size(), 16),
+      [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t k = range.begin(); k != range.end(); ++k) {
+          const int e = candidates[k];
+          FormFactorRow row = kept.rows.row(static_cast<size_t>(match[static_cast<size_t>(e)]));
+          renumber(row, newIndexOfOld);
+          if (formFactors.hemisphere().updateRow(e, row, edit, changedRays[e], raysTested[e])) {
+            rows[static_cast<size_t>(e)] = std::move(row);
+            reuse[static_cast<size_t>(e)] = 1;
+          }
+          progress.advance(formFactors.hemisphere().raysForRow(e));
+        }
+      });
   progress.finish(std::to_string(candidates.size()) + " rows");
+  update.raysOfKeptRows = candidateRays;
   for (int e : candidates) {
+    update.raysTested += static_cast<uint64_t>(raysTested[e]);
     if (!reuse[static_cast<size_t>(e)]) {
       ++update.rowsOtherChange;  // a tie at float precision: cast again
     } else if (changedRays[e] > 0) {
@@ -319,7 +321,9 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   const double testSeconds = secondsSince(t);
   logInfo("update: " + std::to_string(update.rowsReused) + " rows reused as they were, " +
           std::to_string(update.rowsUpdated) + " updated ray by ray (" +
-          std::to_string(update.raysChanged) + " rays changed their hit), " +
+          std::to_string(update.raysChanged) + " rays changed their hit; " +
+          std::to_string(update.raysTested) + " of their " + std::to_string(update.raysOfKeptRows) +
+          " rays made and tested, the others pointing away from the edit), " +
           std::to_string(n - update.rowsReused - update.rowsUpdated) + " cast again (" +
           std::to_string(update.moved) + " moved or new, " +
           std::to_string(update.rowsOtherChange) +

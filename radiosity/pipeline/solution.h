@@ -101,6 +101,9 @@ struct SolveReport {
     int rowsReused = 0;           // kept rows taken as they were: no ray meets the edit first
     int rowsUpdated = 0;          // kept rows brought up to date ray by ray
     uint64_t raysChanged = 0;     // … the rays among theirs whose first hit changed
+    uint64_t raysTested = 0;      // rays of the kept rows made and tested against the edit (the
+                                  // others' direction strata cannot point at it)
+    uint64_t raysOfKeptRows = 0;  // all the rays of the kept rows examined
     int rowsOtherChange = 0;      // rows of unmoved elements cast again: their exposed area or ray
                                   // budget changed, or old and new hits tied
     int64_t directLightKept = 0;  // (element, light) pairs whose E_d was kept: no shadow ray of

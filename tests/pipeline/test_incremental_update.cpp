@@ -134,6 +134,58 @@ TEST_F(IncrementalUpdate, MovedBlockEqualsAFreshSolveAndReusesTheRowsItCannotCha
   EXPECT_GT(u.rowsOtherChange, 0);  // the floor under the block's old and new footprint
 }
 
+// A courtyard: a 12 m × 12 m floor and a 3 m wall along its back, lit by a sky, and a 0.4 m box
+// near one corner moved by dx along x. Seen from most of the floor the box is small: the rows'
+// rays whose direction strata cannot point at it are not made at all.
+void writeCourtyard(const fs::path& dir, double dx) {
+  fs::create_directories(dir);
+  std::ofstream out(dir / "courtyard.obj");
+  out.precision(17);
+  out << "v -6 0 -6\nv -6 0 6\nv 6 0 6\nv 6 0 -6\nf 1 2 3 4\n";
+  out << "v -6 0 -6\nv 6 0 -6\nv 6 3 -6\nv -6 3 -6\nf 5 6 7 8\n";
+  const double x0 = -4.5 + dx, z0 = -4.5, s = 0.4;
+  for (int k = 0; k < 8; ++k)
+    out << "v " << x0 + s * (k & 1) << " " << s * ((k >> 1) & 1) << " " << z0 + s * ((k >> 2) & 1)
+        << "\n";
+  // Outward faces of the box (vertices 9…16: bit 0 x, bit 1 y, bit 2 z).
+  out << "f 9 13 15 11\nf 10 12 16 14\nf 9 10 14 13\nf 11 15 16 12\nf 9 11 12 10\n"
+         "f 13 14 16 15\n";
+  std::ofstream(dir / "courtyard.lights.json")
+      << R"({"lights": [{"type": "sky", "radiance": [0.4, 0.5, 0.7]}]})";
+}
+
+TEST_F(IncrementalUpdate, RaysPointingAwayFromASmallEditAreNotMadeAndTheRowsStayExact) {
+  const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
+  auto courtyard = [](const fs::path& dir) {
+    SolveOptions o = options(dir);
+    o.scenePath = (dir / "courtyard.obj").string();
+    o.elementSize = 0.5;
+    return o;
+  };
+  writeCourtyard(scene, 0);
+  const SolveResult before = runSolve(courtyard(scene));
+  writeCourtyard(scene, 0.3);
+  writeCourtyard(fresh, 0.3);
+  const SolveResult updated =
+      updateKeptSolve(*before.kept, "kept", before.solution.radiosity, courtyard(scene));
+  const SolveResult reference = runSolve(courtyard(fresh));
+  const int n = updated.solution.mesh->elementCount();
+  ASSERT_EQ(n, reference.solution.mesh->elementCount());
+  for (int e = 0; e < n; ++e) {
+    const FormFactorRow a = updated.kept->rows.row(static_cast<size_t>(e));
+    const FormFactorRow b = reference.kept->rows.row(static_cast<size_t>(e));
+    ASSERT_EQ(a.targets, b.targets) << "element " << e;
+    for (size_t k = 0; k < a.values.size(); ++k) ASSERT_DOUBLE_EQ(a.values[k], b.values[k]);
+    ASSERT_DOUBLE_EQ(a.escaped, b.escaped) << "element " << e;
+  }
+  const SolveReport::Update& u = updated.report.update;
+  EXPECT_GT(u.rowsUpdated, 0);
+  EXPECT_GT(u.raysChanged, 0u);
+  // Most rows are far from the box, and only their few strata that point at it are made.
+  EXPECT_LT(u.raysTested, u.raysOfKeptRows / 4);
+  EXPECT_GE(u.raysTested, u.raysChanged);
+}
+
 // The lights' first shot: an element keeps its kept E_d from a light only where none of its
 // shadow rays to it can meet the block's old or new place, so every element's E_d from every
 // light must be the fresh solve's, bit for bit (same strata, same random streams), while a share
