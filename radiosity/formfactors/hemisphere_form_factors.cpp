@@ -365,8 +365,9 @@ bool HemisphereFormFactors::raysAimedAt(int element, const RowSampler& sampler,
   return true;
 }
 
-bool HemisphereFormFactors::updateRow(int element, FormFactorRow& row, const Edit& edit,
-                                      int& changedRays, int& testedRays) const {
+bool HemisphereFormFactors::updateRow(int element, const std::function<FormFactorRow()>& keptRow,
+                                      FormFactorRow& row, const Edit& edit, int& changedRays,
+                                      int& testedRays) const {
   RAD_CHECK_MSG(options_.specular.empty(), "rows through mirrors and glass are not updated");
   changedRays = 0;
   testedRays = 0;
@@ -471,6 +472,7 @@ bool HemisphereFormFactors::updateRow(int element, FormFactorRow& row, const Edi
   }
   changedRays = static_cast<int>(changed.size());
   if (changed.empty()) return true;
+  row = keptRow();
   // Counts from the row's fractions (exact: count / counted is what assemble stored), changed,
   // and back to fractions as assemble writes them.
   const double perRay = counted > 0 ? 1.0 / counted : 0.0;

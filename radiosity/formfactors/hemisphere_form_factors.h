@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/formfactors/form_factor_row.h"
@@ -65,8 +66,9 @@ class HemisphereFormFactors {
     const TriangleSetCaster& oldPlace;
     const std::vector<char>& moved;
   };
-  // Brings `row`, element's row from before the edit (renumbered to the scene's elements, the
-  // entries of elements no longer there left out), up to date ray by ray, casting only the rays
+  // Brings element's row from before the edit (`keptRow()`: renumbered to the scene's elements,
+  // the entries of elements no longer there left out; asked for only when a ray's hit changed,
+  // and then brought up to date into `row`) up to date ray by ray, casting only the rays
   // that meet the edit's region no farther than their first hit in the scene. The rays are the
   // very rays computeRow(element) casts (the same random streams). A ray whose first hit comes
   // before the region hits the same element before and after the edit; one that meets it first
@@ -78,8 +80,8 @@ class HemisphereFormFactors {
   // new hits at float precision): cast the row again. Scenes with mirrors or glass: rays continue
   // past their first hit, so not answered (RAD_CHECK). Only the rays whose direction stratum can
   // point at the region from the element are made at all: `testedRays` counts them.
-  bool updateRow(int element, FormFactorRow& row, const Edit& edit, int& changedRays,
-                 int& testedRays) const;
+  bool updateRow(int element, const std::function<FormFactorRow()>& keptRow, FormFactorRow& row,
+                 const Edit& edit, int& changedRays, int& testedRays) const;
   int raysForRow(int element) const {
     return options_.rayMultiplier.empty()
                ? options_.raysPerElement

@@ -275,6 +275,7 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   const HemisphereFormFactors::Edit edit{regionCaster, oldCaster, moved};
   std::vector<char> reuse(static_cast<size_t>(n), 0);
   std::vector<int> changedRays(static_cast<size_t>(n), 0), raysTested(static_cast<size_t>(n), 0);
+  std::vector<int> keptFrom(static_cast<size_t>(n), -1);  // a row taken as it was: its kept index
   std::vector<FormFactorRow> rows(static_cast<size_t>(n));
   t = Clock::now();
   std::vector<int> candidates;
@@ -291,20 +292,30 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   uint64_t candidateRays = 0;
   for (int e : candidates) candidateRays += formFactors.hemisphere().raysForRow(e);
   Progress progress("rays of the kept rows examined", candidateRays, "rays");
-  tbb::parallel_for(
-      tbb::blocked_range<size_t>(0, candidates.size(), 16),
-      [&](const tbb::blocked_range<size_t>& range) {
-        for (size_t k = range.begin(); k != range.end(); ++k) {
-          const int e = candidates[k];
-          FormFactorRow row = kept.rows.row(static_cast<size_t>(match[static_cast<size_t>(e)]));
-          renumber(row, newIndexOfOld);
-          if (formFactors.hemisphere().updateRow(e, row, edit, changedRays[e], raysTested[e])) {
-            rows[static_cast<size_t>(e)] = std::move(row);
-            reuse[static_cast<size_t>(e)] = 1;
-          }
-          progress.advance(formFactors.hemisphere().raysForRow(e));
-        }
-      });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, candidates.size(), 16),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t k = range.begin(); k != range.end(); ++k) {
+                        const int e = candidates[k];
+                        const int old = match[static_cast<size_t>(e)];
+                        auto keptRow = [&] {
+                          FormFactorRow row = kept.rows.row(static_cast<size_t>(old));
+                          renumber(row, newIndexOfOld);
+                          return row;
+                        };
+                        FormFactorRow row;
+                        if (formFactors.hemisphere().updateRow(e, keptRow, row, edit,
+                                                               changedRays[e], raysTested[e])) {
+                          reuse[static_cast<size_t>(e)] = 1;
+                          // An unchanged row goes from the kept table to the new one directly; the
+                          // stage holds an empty stand-in meanwhile.
+                          if (changedRays[e] > 0)
+                            rows[static_cast<size_t>(e)] = std::move(row);
+                          else
+                            keptFrom[static_cast<size_t>(e)] = old;
+                        }
+                        progress.advance(formFactors.hemisphere().raysForRow(e));
+                      }
+                    });
   progress.finish(std::to_string(candidates.size()) + " rows");
   update.raysOfKeptRows = candidateRays;
   for (int e : candidates) {
@@ -329,7 +340,7 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
           std::to_string(update.rowsOtherChange) +
           " with another exposed area or ray budget); in " + formatNumber(testSeconds) + " s");
   formFactors.adoptRows(std::move(rows), reuse);
-  next->rows = KeptRowTable(formFactors.takeAllRows());
+  next->rows = KeptRowTable(formFactors.takeAllRows(), kept.rows, keptFrom, newIndexOfOld);
   next->fingerprint = keptFactorsFingerprint(solution.scene, options);
   next->options = options;
 

@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <limits>
 #include <utility>
 
@@ -42,6 +43,76 @@ KeptRowTable::KeptRowTable(const std::vector<FormFactorRow>& rows) {
     escaped_.push_back(row.escaped);
     if (!row.tinted.empty()) ++tintedRows_;
     tinted_.push_back(row.tinted);
+  }
+}
+
+KeptRowTable::KeptRowTable(const std::vector<FormFactorRow>& rows, const KeptRowTable& kept,
+                           const std::vector<int>& keptFrom, const std::vector<int>& newIndexOf) {
+  RAD_CHECK_EQ(rows.size(), keptFrom.size());
+  RAD_CHECK(!kept.anyTinted());
+  const size_t n = rows.size();
+  std::vector<size_t> count(n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      for (size_t i = r.begin(); i != r.end(); ++i) {
+                        if (keptFrom[i] < 0) {
+                          count[i] = rows[i].targets.size();
+                          continue;
+                        }
+                        const RowView v = kept.view(static_cast<size_t>(keptFrom[i]));
+                        size_t c = 0;
+                        for (size_t k = 0; k < v.count; ++k)
+                          c += newIndexOf[static_cast<size_t>(v.targets[k])] >= 0;
+                        count[i] = c;
+                      }
+                    });
+  size_t factors = 0;
+  for (size_t c : count) factors += c;
+  RAD_CHECK(factors <= static_cast<size_t>(std::numeric_limits<int>::max()));
+  reserve(n, factors);
+  int* outer = f_.outerIndexPtr();
+  for (size_t i = 0; i < n; ++i) outer[i + 1] = outer[i] + static_cast<int>(count[i]);
+  f_.data().resize(static_cast<Eigen::Index>(factors));
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, n, 256), [&](const tbb::blocked_range<size_t>& r) {
+        std::vector<std::pair<int, double>> unsorted;
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+          int* targets = f_.innerIndexPtr() + outer[i];
+          double* values = f_.valuePtr() + outer[i];
+          if (keptFrom[i] < 0) {
+            const FormFactorRow& row = rows[i];
+            RAD_CHECK(row.tinted.empty());
+            for (size_t k = 0; k < row.targets.size(); ++k) {
+              targets[k] = row.targets[k];
+              values[k] = static_cast<float>(row.values[k]);  // as factors.bin keeps them
+            }
+            continue;
+          }
+          const RowView v = kept.view(static_cast<size_t>(keptFrom[i]));
+          size_t c = 0;
+          bool sorted = true;
+          for (size_t k = 0; k < v.count; ++k) {
+            const int to = newIndexOf[static_cast<size_t>(v.targets[k])];
+            if (to < 0) continue;
+            sorted = sorted && (c == 0 || targets[c - 1] < to);
+            targets[c] = to;
+            values[c++] = v.values[k];
+          }
+          if (sorted) continue;
+          // The kept elements keep their order in the new mesh, so this is rare.
+          unsorted.clear();
+          for (size_t k = 0; k < c; ++k) unsorted.emplace_back(targets[k], values[k]);
+          std::sort(unsorted.begin(), unsorted.end());
+          for (size_t k = 0; k < c; ++k) {
+            targets[k] = unsorted[k].first;
+            values[k] = unsorted[k].second;
+          }
+        }
+      });
+  for (size_t i = 0; i < n; ++i) {
+    escaped_.push_back(keptFrom[i] < 0 ? rows[i].escaped
+                                       : kept.view(static_cast<size_t>(keptFrom[i])).escaped);
+    tinted_.emplace_back();
   }
 }
 
