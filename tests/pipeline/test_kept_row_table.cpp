@@ -85,6 +85,43 @@ TEST(KeptRowTable, BuiltFromRowsIsTheTableOfTheSameRowsAppended) {
   }
 }
 
+// update's table: rows taken from the kept table and renumbered (an element gone, two swapped)
+// next to new rows. Each must be what renumbering the kept row by hand gives: the entries of
+// the gone element left out, the targets sorted again where the swap unsorted them.
+TEST(KeptRowTable, AnUpdatesRowsAreTheKeptRowsRenumberedBesideTheNewOnes) {
+  std::vector<FormFactorRow> old(4);
+  old[0].targets = {1, 2, 3};
+  old[0].values = {0.25, 0.125, 0.0625};
+  old[0].escaped = 0.5625;
+  old[1].targets = {0, 2};
+  old[1].values = {0.5, 0.1};
+  old[1].escaped = 0.4;
+  old[2].targets = {0, 3};
+  old[2].values = {0.375, 0.25};
+  old[3].escaped = 1;
+  const KeptRowTable kept(old);
+  // New elements: 0 is old 0, 1 is old 3, 2 is old 2, 3 is new; old 1 is gone.
+  const std::vector<int> newIndexOf = {0, -1, 2, 1};
+  std::vector<FormFactorRow> rows(4);
+  rows[3].targets = {0, 1};
+  rows[3].values = {0.3, 0.2};
+  rows[3].escaped = 0.5;
+  const std::vector<int> keptFrom = {0, 3, 2, -1};
+  const KeptRowTable table(rows, kept, keptFrom, newIndexOf);
+  ASSERT_EQ(table.size(), 4u);
+  const FormFactorRow r0 = table.row(0), r1 = table.row(1), r2 = table.row(2), r3 = table.row(3);
+  EXPECT_EQ(r0.targets, (std::vector<int>{1, 2}));  // old 3 → 1, old 2 → 2, old 1 gone; sorted
+  EXPECT_EQ(r0.values, (std::vector<double>{0.0625, 0.125}));
+  EXPECT_EQ(r0.escaped, 0.5625);
+  EXPECT_TRUE(r1.targets.empty());
+  EXPECT_EQ(r1.escaped, 1);
+  EXPECT_EQ(r2.targets, (std::vector<int>{0, 1}));
+  EXPECT_EQ(r2.values, (std::vector<double>{0.375, 0.25}));
+  EXPECT_EQ(r3.targets, (std::vector<int>{0, 1}));
+  EXPECT_EQ(r3.values, (std::vector<double>{static_cast<float>(0.3), static_cast<float>(0.2)}));
+  EXPECT_EQ(table.factorCount(), 6u);
+}
+
 // update lends F to Gauss–Seidel and keeps the table for factors.bin: the matrix comes back as
 // it went, and the rows cannot be read while it is away.
 TEST(KeptRowTable, ALentMatrixComesBackAndTheRowsWithIt) {
