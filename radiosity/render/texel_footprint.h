@@ -15,18 +15,20 @@ struct TexelFootprint {
   Eigen::Vector3d perX = Eigen::Vector3d::Zero(), perY = Eigen::Vector3d::Zero();
 
   // The footprint of the texel whose centre has barycentrics `centre` on a triangle with corners
-  // `texelCorners` in texel units (non-degenerate). The barycentrics are affine in the texel
+  // `texelCorners` in texel units. The barycentrics are affine in the texel
   // position, so their steps are constant over the triangle.
   static TexelFootprint of(const std::array<Eigen::Vector2d, 3>& texelCorners,
                            const Eigen::Vector3d& centre) {
     const Eigen::Vector2d e1 = texelCorners[1] - texelCorners[0],
                           e2 = texelCorners[2] - texelCorners[0];
     const double det = e1.x() * e2.y() - e1.y() * e2.x();
+    TexelFootprint f;
+    f.centre = centre;
+    // A triangle of no area in texel space (scene UVs may hold one): its centre alone.
+    if (!std::isfinite(1.0 / det)) return f;
     // b1 = (d.x e2.y − d.y e2.x) / det and b2 = (e1.x d.y − e1.y d.x) / det for d = p − t0.
     const double b1x = e2.y() / det, b1y = -e2.x() / det;
     const double b2x = -e1.y() / det, b2y = e1.x() / det;
-    TexelFootprint f;
-    f.centre = centre;
     f.perX = {-b1x - b2x, b1x, b2x};
     f.perY = {-b1y - b2y, b1y, b2y};
     return f;

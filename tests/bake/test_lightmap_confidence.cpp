@@ -24,6 +24,7 @@
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/visibility/ray_caster.h"
+#include "tests/support/test_scenes.h"
 
 namespace rad {
 namespace {
@@ -35,25 +36,12 @@ const double kIntensity = 10;
 
 // The floor y = 0 over [-2, 2]², facing up, under a point light of intensity kIntensity.
 Scene pointLightOverFloor() {
-  Scene scene;
-  scene.sourcePath = "test";
-  Material grey;
-  grey.name = "grey";
-  grey.diffuse = kRho;
-  scene.materials.push_back(grey);
   Light light;
   light.type = LightType::Point;
   light.position = kLight;
   light.intensity = Rgb::all(kIntensity);
-  scene.lights.push_back(light);
-  ScenePolygon polygon;
-  for (const Eigen::Vector3d& c :
-       std::vector<Eigen::Vector3d>{{-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}}) {
-    polygon.vertices.push_back(static_cast<int>(scene.positions.size()));
-    scene.positions.push_back(c);
-  }
-  polygon.material = 0;
-  scene.polygons.push_back(polygon);
+  Scene scene = testing::greyScene(kRho, {light});
+  testing::addPolygon(scene, {{-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}});
   return scene;
 }
 

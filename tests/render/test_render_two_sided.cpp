@@ -10,6 +10,7 @@
 #include "radiosity/render/image_renderer.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/two_sided.h"
+#include "tests/support/test_scenes.h"
 
 namespace rad {
 namespace {
@@ -18,20 +19,11 @@ const Rgb kRho{0.5, 0.4, 0.3};
 const Rgb kSky{1, 2, 3};
 
 ImageRgb viewFromAbove(bool twoSided) {
-  Scene scene;
-  scene.sourcePath = "test";
-  Material grey;
-  grey.name = "grey";
-  grey.diffuse = kRho;
-  scene.materials.push_back(grey);
-  scene.positions = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
-  ScenePolygon quad;
-  quad.vertices = {0, 1, 2, 3};  // normal -y: facing down
-  scene.polygons.push_back(quad);
   Light sky;
   sky.type = LightType::Sky;
   sky.radiance = kSky;
-  scene.lights = {sky};
+  Scene scene = testing::greyScene(kRho, {sky});
+  testing::addPolygon(scene, {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}});  // facing down
   applyTwoSidedInput(scene, {twoSided, {}});
   addBackSides(scene);
 

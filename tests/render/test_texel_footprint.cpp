@@ -68,6 +68,14 @@ TEST(TexelFootprint, PointsOfATexelPastTheEdgeStayOnTheElement) {
   EXPECT_DOUBLE_EQ(TexelFootprint::mirrorInto(0.3, 0), 0.0);
 }
 
+TEST(TexelFootprint, ATriangleOfNoAreaInTexelSpaceGivesItsCentreAlone) {
+  // Scene UVs may collapse a face to a line: no steps to invert, so the texel is its centre.
+  const std::array<Vec2, 3> line{Vec2(1, 1), Vec2(2, 2), Vec2(3, 3)};
+  const TexelFootprint f = TexelFootprint::of(line, {0.2, 0.3, 0.5});
+  EXPECT_TRUE(f.isPoint());
+  EXPECT_LT((f.at(0.9, 0.1) - Eigen::Vector3d(0.2, 0.3, 0.5)).norm(), 1e-15);
+}
+
 const Rgb kRho{0.5, 0.4, 0.3};
 const Rgb kSun{3.0, 2.0, 1.0};  // W/m² on a plane facing it
 
