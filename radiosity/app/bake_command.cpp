@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <functional>
+#include <future>
 #include <limits>
 #include <map>
 #include <memory>
@@ -122,6 +124,11 @@ std::string lightmapFileName(int page, int pages, const std::string& extension) 
                     : "lightmap_" + std::to_string(page) + "." + extension;
 }
 
+// A light group's file: the whole's name after the group's ("group_warm_lightmap.exr").
+std::string groupFileName(const LightGroup& group, const std::string& name) {
+  return "group_" + group.fileName + "_" + name;
+}
+
 // The confidence map (docs/baking.md, "How far to trust each texel"): per page, the estimated
 // absolute error of each texel's value per channel (W·m⁻²·sr⁻¹), rasterised and dilated like
 // the values. Without a gather: the mesh's displayed error (displayedError, the refinement's
@@ -134,8 +141,7 @@ std::string lightmapFileName(int page, int pages, const std::string& extension) 
 // solution's own error (its form-factor rays' noise, its elements' means) where it reaches the
 // texel through the gathered light, or through the interpolated values.
 std::vector<Lightmap> confidencePages(const Solution& solution, const LightmapLayout& layout,
-                                      const VertexInterpolation& interpolation,
-                                      const std::vector<Rgb>& vertexValues, int dilation,
+                                      const std::vector<Lightmap>& lightmaps,
                                       LightmapContent content,
                                       const std::vector<std::vector<Rgb>>& gatherError,
                                       const ElementExposure& exposure) {
@@ -167,9 +173,8 @@ std::vector<Lightmap> confidencePages(const Solution& solution, const LightmapLa
   };
   std::vector<Lightmap> pages;
   for (int page = 0; page < layout.pages; ++page)
-    pages.push_back(bakeLightmap(
-        mesh, layout, interpolation, vertexValues, dilation,
-        [&](int e, const Eigen::Vector3d& b, size_t texel) -> Rgb {
+    pages.push_back(bakeOnTexels(
+        lightmaps[page], layout, [&](int e, const Eigen::Vector3d& b, size_t texel) -> Rgb {
           if (!gatherError.empty()) {
             const Rgb& error = gatherError[page][texel];
             return irradiance ? overRho(error, reflectanceAt(scene, mesh, e, b[1], b[2])) : error;
@@ -180,8 +185,7 @@ std::vector<Lightmap> confidencePages(const Solution& solution, const LightmapLa
           if (textured && hasReflectanceTexture(scene, mesh, e))
             return reflectanceAt(scene, mesh, e, b[1], b[2]) * incidentError[e];
           return radianceError[e];
-        },
-        page));
+        }));
   return pages;
 }
 
@@ -318,9 +322,10 @@ void runBake(const CLI::App& command, BakeOptions& o) {
                          std::vector<Rgb>(static_cast<size_t>(layout.width) * layout.height));
     }
     // The pages of one solution (the whole, or one light group's layer with its own emitters'
-    // Le): every step is linear in B and Le, so the layers' pages add up to the whole's.
+    // Le): every step is linear in B and Le, so the layers' pages add up to the whole's. A
+    // layer's pages are made on the texels of the whole's (`shape`), not rasterised again.
     auto bakePages = [&](const std::vector<Rgb>& radiosity, const std::vector<Rgb>& vertexValues,
-                         const std::vector<Rgb>& le) {
+                         const std::vector<Rgb>& le, const std::vector<Lightmap>* shape) {
       // H/π at the vertices: the light arriving, smooth across elements of different reflectance.
       std::vector<Rgb> vertexIncident;
       if (!gather && textured) {
@@ -358,30 +363,29 @@ void runBake(const CLI::App& command, BakeOptions& o) {
         } else {
           // The interpolated solution, with the texture's detail inside each element (or
           // without the albedo at all); where the point is buried, what it emits alone.
-          pages.push_back(bakeLightmap(
-              mesh, layout, interpolation, vertexValues, o.dilation,
-              [&](int e, const Eigen::Vector3d& b, size_t) {
-                if (exposure.buriedAtBarycentric(e, b[1], b[2])) return irradiance ? Rgb() : le[e];
-                const auto& v = interpolation.triangle(e);
-                auto at = [&](const std::vector<Rgb>& perVertex) {
-                  return perVertex[v[0]] * b[0] + perVertex[v[1]] * b[1] + perVertex[v[2]] * b[2];
-                };
-                if (irradiance) return at(vertexIncident);
-                if (!textured || !hasReflectanceTexture(solution.scene, mesh, e))
-                  return at(vertexValues);
-                return le[e] + texelRho(e, b) * at(vertexIncident);
-              },
-              page));
+          const TexelEvaluator interpolated = [&](int e, const Eigen::Vector3d& b, size_t) {
+            if (exposure.buriedAtBarycentric(e, b[1], b[2])) return irradiance ? Rgb() : le[e];
+            const auto& v = interpolation.triangle(e);
+            auto at = [&](const std::vector<Rgb>& perVertex) {
+              return perVertex[v[0]] * b[0] + perVertex[v[1]] * b[1] + perVertex[v[2]] * b[2];
+            };
+            if (irradiance) return at(vertexIncident);
+            if (!textured || !hasReflectanceTexture(solution.scene, mesh, e))
+              return at(vertexValues);
+            return le[e] + texelRho(e, b) * at(vertexIncident);
+          };
+          pages.push_back(shape ? bakeOnTexels((*shape)[page], layout, interpolated)
+                                : bakeLightmap(mesh, layout, interpolation, vertexValues,
+                                               o.dilation, interpolated, page));
         }
       }
       return pages;
     };
-    lightmaps = bakePages(solution.radiosity, vertexRadiance, elementLe);
+    lightmaps = bakePages(solution.radiosity, vertexRadiance, elementLe, nullptr);
     {
       // The confidence map: the "error" channel of lightmap.exr, and its summary.
       const auto confidenceStart = std::chrono::steady_clock::now();
-      errorPages = confidencePages(solution, layout, interpolation, vertexRadiance, o.dilation,
-                                   o.content, gatherError, exposure);
+      errorPages = confidencePages(solution, layout, lightmaps, o.content, gatherError, exposure);
       const ConfidenceSummary c = summariseConfidence(lightmaps, errorPages);
       const std::string includes =
           o.gather > 0
@@ -404,8 +408,6 @@ void runBake(const CLI::App& command, BakeOptions& o) {
           {"fraction_above_10_percent", c.fractionAbove10Percent},
           {"seconds", since(confidenceStart)}};
     }
-    for (const Lightmap& page : lightmaps)
-      look.lightmapPages.push_back(encodePng(page.radiance, toneMap));
     for (size_t g = 0; g < solution.layers.size(); ++g) {
       const LightGroup& group = solution.layers[g].group;
       std::vector<char> member(solution.scene.materials.size(), 0);
@@ -414,7 +416,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       for (int e = 0; e < mesh.elementCount(); ++e)
         if (member[mesh.material(e)]) groupLe[e] = elementLe[e];
       layerLightmaps.push_back(
-          bakePages(solution.layers[g].radiosity, layerVertexRadiance[g], groupLe));
+          bakePages(solution.layers[g].radiosity, layerVertexRadiance[g], groupLe, &lightmaps));
     }
     size_t crowded = 0;
     auto count = [&](TexelState state) {
@@ -484,6 +486,42 @@ void runBake(const CLI::App& command, BakeOptions& o) {
         {{"what", "lightmap, scene_baked.obj"}, {"why", "--no-lightmap: vertex colours only"}}};
     logInfo("skipping the lightmap (--no-lightmap): vertex colours only");
   }
+  // Everything goes under temporary names; only when all are complete do they take their names.
+  throwIfInterrupted();
+  OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
+  ensureDirectory(o.solve.outputDir);
+  const std::filesystem::path dir(o.solve.outputDir);
+  // The EXR pages are compressed on OpenEXR's own threads while the rest is encoded and written
+  // (a large page takes a few tenths of a second). `exrFiles` outlives `writingExrs`, whose
+  // destructor waits for the writes: on a failure the temporary files go only once they are done.
+  std::vector<std::unique_ptr<AtomicPath>> exrFiles;
+  std::vector<std::function<void()>> exrWrites;
+  auto exr = [&](const std::string& name, const ImageRgb& image, std::vector<ExrChannel> extra) {
+    exrFiles.push_back(std::make_unique<AtomicPath>((dir / name).string()));
+    exrWrites.push_back([file = exrFiles.back().get(), &image, extra = std::move(extra)] {
+      writeExr(*file, image, extra);
+    });
+  };
+  for (int page = 0; page < static_cast<int>(lightmaps.size()); ++page)
+    exr(lightmapFileName(page, layout.pages, "exr"), lightmaps[page].radiance,
+        {{"error", errorChannel(errorPages[page])}});
+  for (size_t g = 0; g < layerLightmaps.size(); ++g)
+    for (int page = 0; page < static_cast<int>(layerLightmaps[g].size()); ++page)
+      exr(groupFileName(solution.layers[g].group, lightmapFileName(page, layout.pages, "exr")),
+          layerLightmaps[g][page].radiance, {});
+  for (size_t page = 0; page < directionalPages.size(); ++page)
+    for (int k = 0; k < 4; ++k)
+      exr(directionalFileName(static_cast<int>(page), layout.pages,
+                              std::string(directionalCoefficientNames()[k]) + ".exr"),
+          directionalPages[page].coefficients[k].radiance, {});
+  // On one thread (--threads 1) they are written at the end, on this one.
+  std::future<void> writingExrs =
+      std::async(threads > 1 ? std::launch::async : std::launch::deferred, [&exrWrites] {
+        for (const auto& write : exrWrites) write();
+      });
+
+  for (const Lightmap& page : lightmaps)
+    look.lightmapPages.push_back(encodePng(page.radiance, toneMap));
   const BakedMesh baked = makeBakedMesh(mesh, interpolation, vertexRadiance,
                                         o.noLightmap ? nullptr : &layout, materialNames);
   if (!o.noLightmap) {
@@ -501,14 +539,13 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     BakedLayer layer;
     layer.name = group.name;
     for (int v : baked.sourceVertex) layer.radiance.push_back(layerVertexRadiance[g][v]);
-    const std::string prefix = "group_" + group.fileName + "_";
-    nlohmann::json files = {prefix + "vertex_colors.ply"};
+    nlohmann::json files = {groupFileName(group, "vertex_colors.ply")};
     if (!o.noLightmap)
       for (int page = 0; page < layout.pages; ++page) {
         layer.lightmapPages.push_back(encodePng(layerLightmaps[g][page].radiance, toneMap));
-        layer.exrFiles.push_back(prefix + lightmapFileName(page, layout.pages, "exr"));
+        layer.exrFiles.push_back(groupFileName(group, lightmapFileName(page, layout.pages, "exr")));
         files.push_back(layer.exrFiles.back());
-        files.push_back(prefix + lightmapFileName(page, layout.pages, "png"));
+        files.push_back(groupFileName(group, lightmapFileName(page, layout.pages, "png")));
       }
     nlohmann::json materials = nlohmann::json::array(), lights = nlohmann::json::array();
     for (int m : group.materials) materials.push_back(solution.scene.materials[m].name);
@@ -526,11 +563,6 @@ void runBake(const CLI::App& command, BakeOptions& o) {
             " layers (group_NAME_* files; they sum to the whole)");
   }
 
-  // Everything goes under temporary names; only when all are complete do they take their names.
-  throwIfInterrupted();
-  OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
-  ensureDirectory(o.solve.outputDir);
-  const std::filesystem::path dir(o.solve.outputDir);
   std::vector<std::unique_ptr<AtomicFile>> files;
   auto open = [&](const std::string& name, bool binary) -> std::ostream& {
     files.push_back(std::make_unique<AtomicFile>((dir / name).string(), binary));
@@ -547,12 +579,13 @@ void runBake(const CLI::App& command, BakeOptions& o) {
         .write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
   }
   for (size_t g = 0; g < solution.layers.size(); ++g) {
-    const std::string prefix = "group_" + solution.layers[g].group.fileName + "_";
-    writeVertexColorsPly(open(prefix + "vertex_colors.ply", true), interpolation, mesh,
+    const LightGroup& group = solution.layers[g].group;
+    writeVertexColorsPly(open(groupFileName(group, "vertex_colors.ply"), true), interpolation, mesh,
                          layerVertexRadiance[g], toneMap);
     for (size_t page = 0; page < look.layers[g].lightmapPages.size(); ++page) {
       const std::vector<std::uint8_t>& png = look.layers[g].lightmapPages[page];
-      open(prefix + lightmapFileName(static_cast<int>(page), layout.pages, "png"), true)
+      open(groupFileName(group, lightmapFileName(static_cast<int>(page), layout.pages, "png")),
+           true)
           .write(reinterpret_cast<const char*>(png.data()),
                  static_cast<std::streamsize>(png.size()));
     }
@@ -568,21 +601,12 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   }
   summary["export_seconds"] = since(start);
   open("bake.json", false) << summary.dump(2) << "\n";
-  // The EXR library writes by name (atomically on its own): last, so a failure before it leaves
-  // nothing behind.
-  for (int page = 0; page < static_cast<int>(lightmaps.size()); ++page)
-    writeExr((dir / lightmapFileName(page, layout.pages, "exr")).string(), lightmaps[page].radiance,
-             {{"error", errorChannel(errorPages[page])}});
-  for (size_t g = 0; g < layerLightmaps.size(); ++g)
-    for (int page = 0; page < static_cast<int>(layerLightmaps[g].size()); ++page)
-      writeExr((dir / look.layers[g].exrFiles[page]).string(), layerLightmaps[g][page].radiance);
-  for (size_t page = 0; page < directionalPages.size(); ++page)
-    for (int k = 0; k < 4; ++k)
-      writeExr((dir / directionalFileName(static_cast<int>(page), layout.pages,
-                                          std::string(directionalCoefficientNames()[k]) + ".exr"))
-                   .string(),
-               directionalPages[page].coefficients[k].radiance);
-  for (auto& f : files) f->commit();
+  writingExrs.get();  // rethrows a failed write
+  std::vector<AtomicFile*> set;
+  for (auto& f : files) set.push_back(f.get());
+  std::vector<AtomicPath*> exrSet;
+  for (auto& f : exrFiles) exrSet.push_back(f.get());
+  commitAll(set, exrSet);
   logInfo("baked " + o.solve.scenePath + " into " + o.solve.outputDir + " in " +
           std::to_string(since(start)) + " s after the solve");
 }

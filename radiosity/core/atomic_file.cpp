@@ -42,16 +42,24 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
-void commitAll(const std::vector<AtomicFile*>& files) {
+void commitAll(const std::vector<AtomicFile*>& files, const std::vector<AtomicPath*>& written) {
   for (AtomicFile* file : files) file->finish();
-  for (AtomicFile* file : files)
-    if (std::filesystem::is_directory(file->path()))
-      throw RuntimeFailure("cannot write " + file->path() + ": a directory is in the way");
+  std::vector<std::string> destinations;
+  for (const AtomicFile* file : files) destinations.push_back(file->path());
+  for (const AtomicPath* file : written) destinations.push_back(file->path());
+  for (const std::string& path : destinations)
+    if (std::filesystem::is_directory(path))
+      throw RuntimeFailure("cannot write " + path + ": a directory is in the way");
   size_t committed = 0;
   try {
-    for (; committed < files.size(); ++committed) files[committed]->commit();
+    for (; committed < destinations.size(); ++committed) {
+      if (committed < files.size())
+        files[committed]->commit();
+      else
+        written[committed - files.size()]->commit();
+    }
   } catch (...) {
-    for (size_t k = 0; k < committed; ++k) std::remove(files[k]->path().c_str());
+    for (size_t k = 0; k < committed; ++k) std::remove(destinations[k].c_str());
     throw;
   }
 }

@@ -31,10 +31,13 @@ class AtomicFile {
   bool committed_ = false;
 };
 
+class AtomicPath;
+
 // Commits a set of files together: finishes all, checks that each destination can take its name,
 // then renames them; if a rename still fails, the files already renamed are removed again, so a
-// failed set leaves none of its files behind.
-void commitAll(const std::vector<AtomicFile*>& files);
+// failed set leaves none of its files behind. `written` are files a library wrote by name (the
+// EXR pages) that belong to the same set.
+void commitAll(const std::vector<AtomicFile*>& files, const std::vector<AtomicPath*>& written = {});
 
 // For libraries that write a file by name (OpenEXR): hands out a temporary path next to the
 // destination; commit() renames it into place, destruction without commit removes it.

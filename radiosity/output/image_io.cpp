@@ -32,6 +32,12 @@ void writeExr(const std::string& path, const ImageRgb& image) { writeExr(path, i
 
 void writeExr(const std::string& path, const ImageRgb& image,
               const std::vector<ExrChannel>& extra) {
+  AtomicPath file(path);
+  writeExr(file, image, extra);
+  file.commit();
+}
+
+void writeExr(const AtomicPath& file, const ImageRgb& image, const std::vector<ExrChannel>& extra) {
   const int w = image.width, h = image.height;
   std::vector<float> channels[3];
   for (int c = 0; c < 3; ++c) {
@@ -45,7 +51,6 @@ void writeExr(const std::string& path, const ImageRgb& image,
         channel.name != "R" && channel.name != "G" && channel.name != "B" && !channel.name.empty(),
         "writeExr: an extra channel needs a name of its own");
   }
-  AtomicPath file(path);
   try {
     Imf::Header header(w, h);
     const char* names[3] = {"R", "G", "B"};
@@ -76,9 +81,8 @@ void writeExr(const std::string& path, const ImageRgb& image,
     out.setFrameBuffer(frame);
     out.writePixels(h);
   } catch (const std::exception& e) {
-    throw RuntimeFailure("cannot write " + path + ": " + e.what());
+    throw RuntimeFailure("cannot write " + file.path() + ": " + e.what());
   }
-  file.commit();
 }
 
 std::vector<float> readExrChannel(const std::string& path, const std::string& name) {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "radiosity/core/atomic_file.h"
 #include "radiosity/core/image.h"
 #include "radiosity/output/tone_map.h"
 
@@ -25,6 +26,9 @@ struct ExrChannel {
 // writeExr with extra channels (e.g. the lightmap's "error"); readExr reads its R, G, B alike.
 // RAD_CHECK (CheckFailure) when a channel's size is not the image's or its name is R, G, B.
 void writeExr(const std::string& path, const ImageRgb& image, const std::vector<ExrChannel>& extra);
+// The same under `file`'s temporary name, left for the caller to commit with the other files of
+// its set (so one written early, beside others, takes its name only when all are complete).
+void writeExr(const AtomicPath& file, const ImageRgb& image, const std::vector<ExrChannel>& extra);
 // The channel `name` of an EXR file, row-major over its data window. Throws InputError naming the
 // file when it is missing, unreadable or has no such channel.
 std::vector<float> readExrChannel(const std::string& path, const std::string& name);

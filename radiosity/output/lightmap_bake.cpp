@@ -61,6 +61,132 @@ Eigen::Vector3d nearestBarycentric(const std::array<Vec2, 3>& t, const Vec2& p) 
   return {1 - v - w, v, w};
 }
 
+// Texel weights, a pure function of the element's triangle in texel space and the texel: the
+// rasteriser's passes accept texels by them, and every texel's value is taken at them.
+// Pass 1's: the texel's centre inside the element.
+bool centreInside(const std::array<Vec2, 3>& t, int x, int y, Eigen::Vector3d& inside) {
+  const Eigen::Vector3d b = barycentric(t, Vec2(x + 0.5, y + 0.5));
+  if (b.minCoeff() < -1e-12 || !b.allFinite()) return false;
+  inside = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
+  return true;
+}
+
+// Pass 2's: texels the element overlaps without holding their centre (chart borders, slivers)
+// take the element's point nearest the centre.
+bool nearestToCentre(const std::array<Vec2, 3>& t, int x, int y, Eigen::Vector3d& nearest) {
+  const std::array<Vec2, 3> lower{Vec2(x, y), Vec2(x + 1, y), Vec2(x + 1, y + 1)};
+  const std::array<Vec2, 3> upper{Vec2(x, y), Vec2(x + 1, y + 1), Vec2(x, y + 1)};
+  if (!trianglesOverlap2d(t, lower, 1e-9) && !trianglesOverlap2d(t, upper, 1e-9)) return false;
+  nearest = nearestBarycentric(t, Vec2(x + 0.5, y + 0.5));
+  return true;
+}
+
+template <typename Row>
+void forEachRow(int height, Row&& row) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& r) {
+    for (int y = r.begin(); y != r.end(); ++y) row(y);
+  });
+}
+
+// Every texel an element owns takes evaluate(element, weights, texel), in parallel, at the
+// weights its pass gave it (computed again: cheaper than keeping them for every texel).
+void evaluateOwnedTexels(Lightmap& map, const LightmapLayout& layout,
+                         const TexelEvaluator& evaluate, Progress* progress) {
+  const int width = map.radiance.width;
+  forEachRow(map.radiance.height, [&](int y) {
+    for (int x = 0; x < width; ++x) {
+      const size_t i = map.index(x, y);
+      const int e = map.element[i];
+      if (e < 0) continue;
+      Eigen::Vector3d b = Eigen::Vector3d::Zero();
+      const auto& t = layout.texels[e];
+      const bool accepted = map.state[i] == TexelState::Covered ? centreInside(t, x, y, b)
+                                                                : nearestToCentre(t, x, y, b);
+      RAD_CHECK(accepted);
+      map.radiance.pixels[i] = evaluate(e, b, i);
+    }
+    if (progress) progress->advance(static_cast<uint64_t>(width));
+  });
+}
+
+// The own (covered or partly covered) texels' charts next to (x, y): `first` and, where a second
+// chart's own texels are there too, the lowest such `second`; -1 where none.
+void ownCharts(const Lightmap& map, int x, int y, int& first, int& second) {
+  const int width = map.radiance.width, height = map.radiance.height;
+  first = second = -1;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int nx = x + dx, ny = y + dy;
+      if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+      const size_t j = map.index(nx, ny);
+      if (map.element[j] < 0) continue;
+      const int c = map.chart[j];
+      if (first < 0 || c == first)
+        first = c;
+      else if (second < 0 || c < second)
+        second = c;
+    }
+}
+
+// Texels next to (or on) the own texels of two charts: a bilinear lookup inside either chart
+// may read them, so one of the two bleeds. Never with packed charts (their own texels are at
+// least 2 × padding + 1 apart); scene UVs can place islands that close.
+size_t crowdedTexels(const Lightmap& map) {
+  const int width = map.radiance.width;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<int>(0, map.radiance.height, 16), size_t{0},
+      [&](const tbb::blocked_range<int>& r, size_t crowded) {
+        for (int y = r.begin(); y != r.end(); ++y)
+          for (int x = 0; x < width; ++x) {
+            int first, second;
+            ownCharts(map, x, y, first, second);
+            crowded += second >= 0;
+          }
+        return crowded;
+      },
+      std::plus<size_t>());
+}
+
+// Dilation, map.dilationRadius rings, one at a time from a snapshot, so a ring reads only earlier
+// rings. A texel next to a chart's own texels takes that chart (bilinear lookups inside it read
+// the texel); one next to the own texels of two charts stays empty, as it cannot serve both.
+void dilate(Lightmap& map) {
+  const int width = map.radiance.width, height = map.radiance.height;
+  for (int ring = 0; ring < map.dilationRadius; ++ring) {
+    const std::vector<int> chartBefore = map.chart;
+    // Rows in parallel: a texel filled in this ring reads only texels filled before it.
+    forEachRow(height, [&](int y) {
+      for (int x = 0; x < width; ++x) {
+        const size_t i = map.index(x, y);
+        if (chartBefore[i] >= 0) continue;
+        int own, other;
+        ownCharts(map, x, y, own, other);
+        if (other >= 0) continue;
+        int chosen = own;
+        for (int dy = -1; dy <= 1 && own < 0; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+            const int c = chartBefore[map.index(nx, ny)];
+            if (c >= 0 && (chosen < 0 || c < chosen)) chosen = c;
+          }
+        if (chosen < 0) continue;
+        Rgb sum;
+        int n = 0;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+            const size_t j = map.index(nx, ny);
+            if (chartBefore[j] == chosen) sum += map.radiance.pixels[j], ++n;
+          }
+        map.radiance.pixels[i] = sum / n;
+        map.chart[i] = chosen, map.state[i] = TexelState::Dilated;
+      }
+    });
+  }
+}
+
 }  // namespace
 
 size_t Lightmap::count(TexelState s) const {
@@ -96,18 +222,12 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
   // parallel by an atomic minimum.
   std::unique_ptr<std::atomic<int>[]> owner(new std::atomic<int>[texels]);
   constexpr int kNoOwner = std::numeric_limits<int>::max();
-  auto forEachRow = [&](auto&& row) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, height, 16),
-                      [&](const tbb::blocked_range<int>& r) {
-                        for (int y = r.begin(); y != r.end(); ++y) row(y);
-                      });
-  };
   // One pass over the elements: each empty texel of an element's bounding box that
   // `weights(t, x, y, b)` accepts (t the element in texel space) takes the element, its chart,
   // `state` and the interpolated value at the barycentric weights b it gives. `weights` is a pure
   // function of its arguments: the texel's weights are computed again where they are needed.
   auto rasterise = [&](TexelState state, auto&& weights) {
-    forEachRow([&](int y) {
+    forEachRow(height, [&](int y) {
       for (int x = 0; x < width; ++x)
         owner[map.index(x, y)].store(kNoOwner, std::memory_order_relaxed);
     });
@@ -136,7 +256,7 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
           }
           progress.advance(r.size());
         });
-    forEachRow([&](int y) {
+    forEachRow(height, [&](int y) {
       for (int x = 0; x < width; ++x) {
         const size_t i = map.index(x, y);
         const int e = owner[i].load(std::memory_order_relaxed);
@@ -150,114 +270,39 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
     });
   };
   // Pass 1: texel centres inside an element (first element wins on a shared edge).
-  const auto centreInside = [](const std::array<Vec2, 3>& t, int x, int y,
-                               Eigen::Vector3d& inside) {
-    const Eigen::Vector3d b = barycentric(t, Vec2(x + 0.5, y + 0.5));
-    if (b.minCoeff() < -1e-12 || !b.allFinite()) return false;
-    inside = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
-    return true;
-  };
   rasterise(TexelState::Covered, centreInside);
-  // Pass 2: texels an element overlaps without holding their centre (chart borders, slivers):
-  // the element's point nearest the centre.
-  const auto nearestToCentre = [](const std::array<Vec2, 3>& t, int x, int y,
-                                  Eigen::Vector3d& nearest) {
-    const std::array<Vec2, 3> lower{Vec2(x, y), Vec2(x + 1, y), Vec2(x + 1, y + 1)};
-    const std::array<Vec2, 3> upper{Vec2(x, y), Vec2(x + 1, y + 1), Vec2(x, y + 1)};
-    if (!trianglesOverlap2d(t, lower, 1e-9) && !trianglesOverlap2d(t, upper, 1e-9)) return false;
-    nearest = nearestBarycentric(t, Vec2(x + 0.5, y + 0.5));
-    return true;
-  };
+  // Pass 2: texels an element overlaps without holding their centre (chart borders, slivers).
   rasterise(TexelState::Conservative, nearestToCentre);
   owner.reset();
   progress.finish();
   if (evaluate) {
     Progress gathering("lightmap gather", texels, "texels");
-    forEachRow([&](int y) {
-      for (int x = 0; x < width; ++x) {
-        const size_t i = map.index(x, y);
-        const int e = map.element[i];
-        if (e < 0) continue;
-        // The texel's weights again (cheaper than keeping them for every texel).
-        Eigen::Vector3d b = Eigen::Vector3d::Zero();
-        const auto& t = layout.texels[e];
-        const bool accepted = map.state[i] == TexelState::Covered ? centreInside(t, x, y, b)
-                                                                  : nearestToCentre(t, x, y, b);
-        RAD_CHECK(accepted);
-        map.radiance.pixels[i] = evaluate(e, b, i);
-      }
-      gathering.advance(static_cast<uint64_t>(width));
-    });
+    evaluateOwnedTexels(map, layout, evaluate, &gathering);
     gathering.finish();
   }
 
-  // Texels next to (or on) the own texels of two charts: a bilinear lookup inside either chart
-  // may read them, so one of the two bleeds. Never with packed charts (their own texels are at
-  // least 2 × padding + 1 apart); scene UVs can place islands that close.
-  auto ownCharts = [&](int x, int y, int& first, int& second) {
-    first = second = -1;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int nx = x + dx, ny = y + dy;
-        if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-        const size_t j = map.index(nx, ny);
-        if (map.element[j] < 0) continue;
-        const int c = map.chart[j];
-        if (first < 0 || c == first)
-          first = c;
-        else if (second < 0 || c < second)
-          second = c;
-      }
-  };
-  map.crowdedTexels = tbb::parallel_reduce(
-      tbb::blocked_range<int>(0, height, 16), size_t{0},
-      [&](const tbb::blocked_range<int>& r, size_t crowded) {
-        for (int y = r.begin(); y != r.end(); ++y)
-          for (int x = 0; x < width; ++x) {
-            int first, second;
-            ownCharts(x, y, first, second);
-            crowded += second >= 0;
-          }
-        return crowded;
-      },
-      std::plus<size_t>());
+  map.crowdedTexels = crowdedTexels(map);
+  dilate(map);
+  return map;
+}
 
-  // Dilation, one ring at a time from a snapshot, so a ring reads only earlier rings. A texel
-  // next to a chart's own texels takes that chart (bilinear lookups inside it read the texel); one
-  // next to the own texels of two charts stays empty, as it cannot serve both.
-  for (int ring = 0; ring < dilationRadius; ++ring) {
-    const std::vector<int> chartBefore = map.chart;
-    // Rows in parallel: a texel filled in this ring reads only texels filled before it.
-    forEachRow([&](int y) {
-      for (int x = 0; x < width; ++x) {
-        const size_t i = map.index(x, y);
-        if (chartBefore[i] >= 0) continue;
-        int own, other;
-        ownCharts(x, y, own, other);
-        if (other >= 0) continue;
-        int chosen = own;
-        for (int dy = -1; dy <= 1 && own < 0; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = x + dx, ny = y + dy;
-            if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-            const int c = chartBefore[map.index(nx, ny)];
-            if (c >= 0 && (chosen < 0 || c < chosen)) chosen = c;
-          }
-        if (chosen < 0) continue;
-        Rgb sum;
-        int n = 0;
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = x + dx, ny = y + dy;
-            if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-            const size_t j = map.index(nx, ny);
-            if (chartBefore[j] == chosen) sum += map.radiance.pixels[j], ++n;
-          }
-        map.radiance.pixels[i] = sum / n;
-        map.chart[i] = chosen, map.state[i] = TexelState::Dilated;
-      }
-    });
-  }
+Lightmap bakeOnTexels(const Lightmap& shape, const LightmapLayout& layout,
+                      const TexelEvaluator& evaluate) {
+  RAD_CHECK_MSG(static_cast<bool>(evaluate), "bakeOnTexels: no evaluator");
+  RAD_CHECK_EQ(shape.radiance.width, layout.width);
+  RAD_CHECK_EQ(shape.radiance.height, layout.height);
+  Lightmap map;
+  map.radiance = ImageRgb(layout.width, layout.height);
+  map.element = shape.element;
+  map.chart = shape.chart;
+  map.state = shape.state;
+  map.dilationRadius = shape.dilationRadius;
+  map.crowdedTexels = shape.crowdedTexels;  // the own texels, on which it depends, are the same
+  // The rings are dilated again from the new values: undo the shape's.
+  for (size_t i = 0; i < map.state.size(); ++i)
+    if (map.state[i] == TexelState::Dilated) map.chart[i] = -1, map.state[i] = TexelState::Empty;
+  evaluateOwnedTexels(map, layout, evaluate, nullptr);
+  dilate(map);
   return map;
 }
 

@@ -56,4 +56,12 @@ Lightmap bakeLightmap(const PatchMesh& mesh, const LightmapLayout& layout,
                       const std::vector<Rgb>& vertexRadiance, int dilationRadius,
                       const TexelEvaluator& evaluate = {}, int page = 0);
 
+// Another quantity on the texels of `shape`, a page bakeLightmap made on `layout` (the confidence
+// map, a light group's layer, a directional coefficient): every texel an element owns takes
+// evaluate(element, barycentric, texel) at the weights bakeLightmap gave it, and the dilated rings
+// are filled from those values as bakeLightmap fills them. The same page as bakeLightmap with
+// that evaluator, texel for texel, without rasterising the elements again.
+Lightmap bakeOnTexels(const Lightmap& shape, const LightmapLayout& layout,
+                      const TexelEvaluator& evaluate);
+
 }  // namespace rad

@@ -81,7 +81,7 @@ DirectionalLightmapPage bakeDirectionalPage(const RenderScene& view,
   RAD_CHECK_EQ(radiosity.size(), static_cast<size_t>(mesh.elementCount()));
   const ProbeLights lights(view.scene());
   const size_t texels = static_cast<size_t>(layout.width) * layout.height;
-  // The four coefficients of each texel, cast once (by the first bake) and read by the others.
+  // The four coefficients of each texel, cast once (by the first bake) and read on its texels.
   std::vector<std::array<Rgb, 4>> table(texels);
   std::vector<char> cast(texels, 0);
   const std::vector<Rgb> unused(interpolation.vertexCount());  // every owned texel is evaluated
@@ -98,13 +98,11 @@ DirectionalLightmapPage bakeDirectionalPage(const RenderScene& view,
       },
       page);
   for (int k = 1; k < 4; ++k)
-    out.coefficients[k] = bakeLightmap(
-        mesh, layout, interpolation, unused, dilationRadius,
-        [&, k](int, const Eigen::Vector3d&, size_t texel) {
+    out.coefficients[k] = bakeOnTexels(
+        out.coefficients[0], layout, [&, k](int, const Eigen::Vector3d&, size_t texel) {
           RAD_CHECK_MSG(cast[texel], "directional lightmap: a texel the first bake did not own");
           return table[texel][k];
-        },
-        page);
+        });
   out.direction = ImageRgb(layout.width, layout.height);
   const Lightmap& l0 = out.coefficients[0];
   for (size_t i = 0; i < texels; ++i) {

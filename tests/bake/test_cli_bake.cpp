@@ -382,6 +382,26 @@ TEST(CliBake, BadOptionsFailAndLeaveNothing) {
   EXPECT_TRUE(!fs::exists(dir) || fs::is_empty(dir));
 }
 
+// The outputs are one set: a name the bake cannot take (a directory in the way, of the EXR, which
+// is written early on threads of its own, or of the OBJ, written last) fails the bake before any
+// file takes its name, and no temporary file stays behind.
+TEST(CliBake, AnOutputNameTakenByADirectoryFailsTheBakeAndLeavesNoFile) {
+  for (const std::string taken : {"lightmap.exr", "scene_baked.obj"}) {
+    const fs::path dir = scratchPath("bake_taken_" + taken);
+    fs::remove_all(dir);
+    fs::create_directories(dir / taken / "inside");
+    const auto r = runRadiosity("bake " + kData + "/tests/furnace_box.obj --out " + dir.string() +
+                                " --elements 100 --rays 16 --lightmap-size 64 --quiet");
+    EXPECT_NE(r.exitCode, 0) << taken;
+    EXPECT_NE(r.stderrText.find(taken), std::string::npos) << r.stderrText;
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(dir))
+      left.push_back(entry.path().filename().string());
+    EXPECT_EQ(left, std::vector<std::string>{taken});
+    fs::remove_all(dir);
+  }
+}
+
 // Auto exposure is set by the lit surfaces, sunlit ones included: a 2 × 2 floor (ρ = 0.5) under a
 // sun of irradiance 1 at 45° and a 1-high wall facing away from the sun, which shades the floor's
 // half x < 1. The sunlit half is 1/3 of the area and the brightest, so the 99th percentile is its

@@ -223,6 +223,31 @@ TEST(LightmapBake, OneThreadAndManyBakeTheSamePage) {
   EXPECT_GT(shared, 0u);
 }
 
+// Another quantity on a baked page's texels (the confidence map, a light group's layer) equals a
+// bake of its own with that evaluator, texel for texel: the same owners, the same weights, the
+// dilated rings filled again from the new values.
+TEST(LightmapBake, AQuantityOnAPagesTexelsEqualsABakeOfItsOwn) {
+  const Baked b = bake(cornellMesh(), {0, 128, 2});  // coarse: partly covered and dilated texels
+  ASSERT_GT(b.map.count(TexelState::Conservative), 0u);
+  ASSERT_GT(b.map.count(TexelState::Dilated), 0u);
+  // Different from the page's own values everywhere, varying with the element and the weights.
+  const auto other = [](int e, const Eigen::Vector3d& w, size_t texel) {
+    return Rgb(1 + e, w[1] + 2 * w[2], static_cast<double>(texel % 7));
+  };
+  const Lightmap own = bakeLightmap(b.mesh, b.layout, b.interpolation, b.vertexRadiance, 2, other);
+  const Lightmap onTexels = bakeOnTexels(b.map, b.layout, other);
+  EXPECT_EQ(onTexels.element, own.element);
+  EXPECT_EQ(onTexels.chart, own.chart);
+  EXPECT_TRUE(onTexels.state == own.state);
+  EXPECT_EQ(onTexels.crowdedTexels, own.crowdedTexels);
+  EXPECT_EQ(onTexels.dilationRadius, own.dilationRadius);
+  size_t differing = 0;
+  for (size_t i = 0; i < own.radiance.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      differing += onTexels.radiance.pixels[i][c] != own.radiance.pixels[i][c];
+  EXPECT_EQ(differing, 0u);
+}
+
 TEST(LightmapBake, PaddingAtLeastDilationAndGeometryInsideItsRect) {
   const Baked b = bake(cornellMesh(), {0.01, 0, 3});
   EXPECT_GE(b.layout.padding, b.map.dilationRadius);
