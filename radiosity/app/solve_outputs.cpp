@@ -189,12 +189,18 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
   const Solution& solution = result.solution;
   const PatchMesh& mesh = *solution.mesh;
 
-  // The three large files are independent: written side by side (on a large scene each takes a
-  // good part of a second).
+  // The large files are independent: written side by side (on a large scene each takes a good
+  // part of a second; factors.bin, kept for relight and update, is hundreds of megabytes).
   const ToneMap toneMap = solutionToneMap(solution);
   AtomicFile csv((dir / "elements.csv").string());
   AtomicFile ply((dir / "vertex_colors.ply").string(), /*binary=*/true);
   std::vector<AtomicFile*> files = {&csv, &ply};
+  // What relight reuses (solve --keep-factors).
+  std::unique_ptr<AtomicFile> factors;
+  if (result.kept) {
+    factors = std::make_unique<AtomicFile>((dir / kKeptFactorsFile).string(), /*binary=*/true);
+    files.push_back(factors.get());
+  }
   const auto writeCsv = [&] { writeElementsCsv(csv.stream(), mesh, solution.radiosity); };
   const auto writePly = [&] {
     const VertexInterpolation interpolation(mesh, solution.problem.area);  // exposed areas
@@ -202,16 +208,19 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
         interpolateVertexRadiance(interpolation, solution.radiosity, solution.pointRadiosity);
     writeVertexColorsPly(ply.stream(), interpolation, mesh, vertexRadiance, toneMap);
   };
+  const auto writeFactors = [&] {
+    if (factors) writeKeptFactors(factors->stream(), *result.kept);
+  };
 #ifdef RADIOSITY_HAS_VIEWER
   // ParaView-ready solution.vtp (the VTK viewer's format), committed with the others below.
   AtomicFile vtp((dir / "solution.vtp").string(), /*binary=*/true);
   files.push_back(&vtp);
-  tbb::parallel_invoke(writeCsv, writePly, [&] {
+  tbb::parallel_invoke(writeCsv, writePly, writeFactors, [&] {
     writeSolutionVtp(vtp.stream(), mesh, solution.radiosity, solution.unshot, toneMap,
                      options.scenePath);
   });
 #else
-  tbb::parallel_invoke(writeCsv, writePly);
+  tbb::parallel_invoke(writeCsv, writePly, writeFactors);
 #endif
   // What render, bake and view --solution need to reuse elements.csv.
   std::unique_ptr<AtomicFile> saved;
@@ -219,14 +228,6 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
     saved = std::make_unique<AtomicFile>((dir / kSolutionJson).string());
     writeSavedSolutionJson(*saved, "elements.csv", result, options);
     files.push_back(saved.get());
-  }
-
-  // What relight reuses (solve --keep-factors).
-  std::unique_ptr<AtomicFile> factors;
-  if (result.kept) {
-    factors = std::make_unique<AtomicFile>((dir / kKeptFactorsFile).string(), /*binary=*/true);
-    writeKeptFactors(factors->stream(), *result.kept);
-    files.push_back(factors.get());
   }
 
   // The light probes of `solve --probes`.

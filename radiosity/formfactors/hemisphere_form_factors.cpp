@@ -474,28 +474,35 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<FormFacto
   if (changed.empty()) return true;
   row = keptRow();
   // Counts from the row's fractions (exact: count / counted is what assemble stored), changed,
-  // and back to fractions as assemble writes them.
+  // and back to fractions as assemble writes them. The changes, a few per row, sorted by target
+  // (-1: escaped, first), are merged into the row's targets, which are in ascending order.
   const double perRay = counted > 0 ? 1.0 / counted : 0.0;
-  std::vector<std::pair<int, int64_t>> counts;                  // target, count; target -1: escaped
-  counts.reserve(row.targets.size() + 2 * changed.size() + 1);  // each change: -1 and +1
-  counts.emplace_back(-1, std::llround(row.escaped * counted));
-  for (size_t k = 0; k < row.targets.size(); ++k)
-    counts.emplace_back(row.targets[k], std::llround(row.values[k] * counted));
+  std::vector<std::pair<int, int>> delta;  // target, change in its count
+  delta.reserve(2 * changed.size());       // each change: -1 and +1
   for (const Changed& c : changed) {
-    if (c.oldTarget != kRemoved) counts.emplace_back(c.oldTarget, -1);
-    counts.emplace_back(c.newTarget, 1);
+    if (c.oldTarget != kRemoved) delta.emplace_back(c.oldTarget, -1);
+    delta.emplace_back(c.newTarget, 1);
   }
-  std::sort(counts.begin(), counts.end());
+  std::sort(delta.begin(), delta.end());
+  size_t j = 0;
+  int64_t escaped = std::llround(row.escaped * counted);
+  for (; j < delta.size() && delta[j].first < 0; ++j) escaped += delta[j].second;
+  if (escaped < 0) return false;
   FormFactorRow updated;
-  int64_t escaped = 0;
-  for (size_t k = 0; k < counts.size();) {
-    const int target = counts[k].first;
+  updated.targets.reserve(row.targets.size() + delta.size() - j);
+  updated.values.reserve(row.targets.size() + delta.size() - j);
+  for (size_t k = 0; k < row.targets.size() || j < delta.size();) {
+    const bool fromRow =
+        k < row.targets.size() && (j == delta.size() || row.targets[k] <= delta[j].first);
+    const int target = fromRow ? row.targets[k] : delta[j].first;
     int64_t sum = 0;
-    for (; k < counts.size() && counts[k].first == target; ++k) sum += counts[k].second;
+    if (fromRow) {
+      RAD_CHECK_MSG(k == 0 || row.targets[k - 1] < target, "updateRow: a kept row out of order");
+      sum = std::llround(row.values[k++] * counted);
+    }
+    for (; j < delta.size() && delta[j].first == target; ++j) sum += delta[j].second;
     if (sum < 0) return false;
-    if (target < 0) {
-      escaped = sum;
-    } else if (sum > 0) {
+    if (sum > 0) {
       updated.targets.push_back(target);
       updated.values.push_back(static_cast<double>(sum) * perRay);
     }
