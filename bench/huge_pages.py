@@ -6,7 +6,8 @@
 On the shared atrium (Sponza under the sky and sun of bench/real_scenes.sh, at the defaults), in
 BUILD/huge_pages/: one `solve --keep-factors` (untimed), then per repeat, each command once with
 the hint (the default) and once with RADIOSITY_HUGE_PAGES=0 (the kernel's 4 KiB pages), in
-alternating order: `solve --keep-factors` afresh, `relight` of the kept solve with the sun and
+alternating order: `solve --keep-factors` afresh (the default progressive solver, and
+Gauss-Seidel as bench/incremental_update.py solves), `relight` of the kept solve with the sun and
 sky changed, and `bake --solution` of the kept solve. Prints the medians and their ratios, with
 each run's peak resident memory; writes bench/results/huge_pages.csv.
 """
@@ -63,6 +64,10 @@ def main():
     commands = {
         "solve --keep-factors": ["solve", scene, "--keep-factors", "--out",
                                  os.path.join(work, "fresh")] + LIGHTS,
+        # As bench/incremental_update.py solves: every row cast up front into one table.
+        "solve --keep-factors --solver gauss-seidel": [
+            "solve", scene, "--keep-factors", "--solver", "gauss-seidel", "--rays", "1024",
+            "--element-size", "2.31", "--out", os.path.join(work, "fresh_gs")] + LIGHTS,
         "relight": ["relight", kept, "--override", override, "--out",
                     os.path.join(work, "relit"), "--solver", "gauss-seidel"],
         "bake --solution": ["bake", scene, "--solution", kept, "--out",

@@ -1,12 +1,12 @@
-// The radiosity executable's global operator new: allocations of 4 MiB and more (the lightmap
-// pages, the meshes' and the scene's arrays, the form-factor tables) are advised onto 2 MiB pages
+// The radiosity executable's global operator new: allocations of 4 MiB and more (the form-factor
+// tables, the lightmap pages, the meshes' and the scene's arrays) are advised onto 2 MiB pages
 // before anything touches them. Each first touch of a 4 KiB page is a fault the kernel must serve
-// and clear, and on virtual machines faults are dear: `bake --solution` of Sponza spent a quarter
-// of its time there (1.41x faster with the hint; solve, relight and update the same within the
-// noise, peak memory within 1.5%: `python3 bench/huge_pages.py`, docs/benchmarks.md "Huge pages").
-// Only a hint: with transparent huge pages "never" nothing changes, with "always" it is the
-// kernel's default anyway. The memory is still malloc's, freed by the default operator delete
-// (free). Left to the sanitizers' own allocators in their builds.
+// and clear, and on virtual machines faults are dear: on Sponza a Gauss-Seidel solve is 1.31x and
+// `bake --solution` 1.33x faster with the hint, a progressive solve the same, peak memory within
+// 2% (`python3 bench/huge_pages.py`, docs/benchmarks.md "Huge pages"). Only a hint: with
+// transparent huge pages "never" nothing changes, with "always" it is the kernel's default anyway.
+// The memory is still malloc's, freed by the default operator delete (free). Left to the
+// sanitizers' own allocators in their builds.
 #include <cstdlib>
 #include <new>
 #include <string_view>
