@@ -12,8 +12,9 @@ under BUILD/incremental_update/ (the shared scene itself is never written):
      `bake --solution` of the edited scene from scratch (fresh);
 and prints the wall times, the rows reused, and the relative RMS difference of the two solutions
 per element, beside that of the fresh solve and one with another seed (untimed): the Monte Carlo
-noise floor, which the update stays within (elements the edit renumbers keep what was drawn under
-their old index). Writes bench/results/incremental_update.csv.
+noise floor. The update draws every ray from the streams a fresh solve draws (keyed by the element,
+not its index), so its solution differs from the fresh one by the solvers' tolerance only, far
+below that floor. Writes bench/results/incremental_update.csv.
 """
 import argparse
 import csv
@@ -139,8 +140,7 @@ def main():
         difference = relative_rms(radiosity(os.path.join(kept, "elements.csv")),
                                   radiosity(os.path.join(out, "elements.csv")))
         # The Monte Carlo noise floor: the fresh solve against one with other random streams
-        # (untimed). Elements the edit renumbers keep rows and direct light drawn under their old
-        # index, so the update differs from the fresh solve by up to this much.
+        # (untimed), beside which the update's difference from the fresh solve is to be read.
         other_seed = os.path.join(work, "fresh_seed2")
         run(binary, ["solve", fresh_scene, "--out", other_seed, "--seed", "2"] + bake)
         noise = relative_rms(radiosity(os.path.join(other_seed, "elements.csv")),

@@ -9,6 +9,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "meshing/element_stream.h"
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/rng.h"
@@ -129,7 +130,7 @@ HemisphereFormFactors::RowSampler::RowSampler(const HemisphereFormFactors& owner
   }
   // The only serial part: a shuffle pairing direction strata with position strata, from the
   // row's own stream. A g×g jittered grid stratifies the first g² rays; the rest are plain random.
-  Rng rng(streamKey(owner.options_.seed, static_cast<uint64_t>(element)));
+  Rng rng(streamKey(owner.options_.seed, elementStream(owner.mesh_, element)));
   key_ = (static_cast<uint64_t>(rng.next()) << 32) | rng.next();
   grid_ = static_cast<int>(std::sqrt(static_cast<double>(count_)));
   if (grid_ >= 1 << 15)  // --rays at its limit, times an emitter's multiplier of up to 64
@@ -400,7 +401,8 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<FormFacto
   int counted = 0;  // rays from exposed cells: the row's denominator
   RayBlock b;
   float regionDistance[RayBlock::kSize], oldDistance[RayBlock::kSize];
-  float o[3][RayBlock::kSize], d[3][RayBlock::kSize], near[RayBlock::kSize];
+  int oldTriangle[RayBlock::kSize];
+  float o[3][RayBlock::kSize], d[3][RayBlock::kSize];
   float meetDistance[RayBlock::kSize], hitDistance[RayBlock::kSize];
   int hit[RayBlock::kSize];
   // The rays of a filled block that meet the region no farther than their first hit: their old
@@ -426,7 +428,7 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<FormFacto
     const float* mo[3] = {o[0], o[1], o[2]};
     const float* md[3] = {d[0], d[1], d[2]};
     rays_.closestHits(m, mo, md, hit, hitDistance);
-    edit.oldPlace.distances(m, mo, md, oldDistance);
+    edit.oldPlace.distances(m, mo, md, oldDistance, oldTriangle);
     auto front = [&](int t, int i) {  // frontHits' rule: only a front face receives
       if (t < 0 || t == element) return -1;
       const float* n = &frontNormals_[3 * static_cast<size_t>(t)];
@@ -437,16 +439,23 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<FormFacto
       // triangles are the scene's own, hit at the same distance.
       if (!(meetDistance[i] <= hitDistance[i] * (1 + 1e-5f))) continue;
       const int newTarget = front(hit[i], i);
-      // The first hit on what did not move: the same ray continued past moved elements.
+      // The first hit on what did not move: the same ray in the scene without the moved elements
+      // (not continued past them, which would skip a face where a moved one lies on it, the floor
+      // under a crate).
       int fixedHit = hit[i];
       float fixedDistance = hitDistance[i];
-      while (fixedHit >= 0 && edit.moved[static_cast<size_t>(fixedHit)]) {
+      if (fixedHit >= 0 && edit.moved[static_cast<size_t>(fixedHit)]) {
         const float* one[3] = {&o[0][i], &o[1][i], &o[2][i]};
         const float* oneD[3] = {&d[0][i], &d[1][i], &d[2][i]};
-        near[0] = std::nextafter(fixedDistance, std::numeric_limits<float>::infinity());
-        rays_.closestHits(1, one, oneD, &fixedHit, &fixedDistance, near);
+        edit.withoutMoved.closestHits(1, one, oneD, &fixedHit, &fixedDistance);
       }
-      const int oldTarget = oldDistance[i] < fixedDistance ? kRemoved : front(fixedHit, i);
+      // Its old hit: on the old place, an entry left out of the kept row, or escaped (-1) when
+      // it met a back face there; else what it hits past the moved elements.
+      int oldTarget = front(fixedHit, i);
+      if (oldDistance[i] < fixedDistance) {
+        const float direction[3] = {d[0][i], d[1][i], d[2][i]};
+        oldTarget = edit.oldPlace.meetsFront(oldTriangle[i], direction) ? kRemoved : -1;
+      }
       if (oldTarget != newTarget) changed.push_back({oldTarget, newTarget});
     }
   };
@@ -520,6 +529,7 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
   firstHit.resize(n);  // each ray writes only its own entry
   const bool extended = !options_.specular.empty();
   std::vector<Rgb> weight(extended ? n : 0);
+  const uint64_t stream = extended ? elementStream(mesh_, element) : 0;
   forEachBlock(n, [&](int begin, int count) {
     RayBlock b;
     b.count = count;
@@ -539,8 +549,7 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
       const Eigen::Vector3d direction =
           Eigen::Vector3d(b.direction[0][i], b.direction[1][i], b.direction[2][i]).normalized();
       // Fresnel choices draw from the ray's own stream: reproducible on any thread count.
-      Rng pathRng(
-          streamKey(options_.seed, static_cast<uint64_t>(element), static_cast<uint64_t>(k) + 1));
+      Rng pathRng(streamKey(options_.seed, stream, static_cast<uint64_t>(k) + 1));
       int rays = 0;
       const SpecularPathEnd end = traceThroughSpecular(rays_, normals_, options_.specular, origin,
                                                        direction, element, pathRng, &rays);

@@ -65,6 +65,7 @@ class HemisphereFormFactors {
     const TriangleSetCaster& region;
     const TriangleSetCaster& oldPlace;
     const std::vector<char>& moved;
+    const RayCaster& withoutMoved;  // the scene without the moved elements, in the same frame
   };
   // Brings element's row from before the edit (`keptRow()`: renumbered to the scene's elements,
   // the entries of elements no longer there left out; asked for only when a ray's hit changed,
@@ -73,11 +74,12 @@ class HemisphereFormFactors {
   // very rays computeRow(element) casts (the same random streams). A ray whose first hit comes
   // before the region hits the same element before and after the edit; one that meets it first
   // has its new hit added and its old one taken away: the first of its hit on the old place (an
-  // entry already left out) and its first hit on what did not move (the same ray continued past
-  // moved elements). So the row becomes, count for count, the row computeRow would give, when the
-  // element itself did not move and its exposed cells are the same. `changedRays` counts the rays
-  // whose hit changed. Returns false when a count would fall below zero (a tie between old and
-  // new hits at float precision): cast the row again. Scenes with mirrors or glass: rays continue
+  // entry already left out, or escaped where it met a back face there) and its first hit on what
+  // did not move (the same ray cast at `withoutMoved`). So the row becomes, count for count, the
+  // row computeRow would give, when the element itself did not move and its exposed cells are the
+  // same (but for a ray meeting two triangles at one distance, a tie two BVHs may break either
+  // way). `changedRays` counts the rays whose hit changed. Returns false when a count would fall
+  // below zero (such a tie): cast the row again. Scenes with mirrors or glass: rays continue
   // past their first hit, so not answered (RAD_CHECK). Only the rays whose direction stratum can
   // point at the region from the element are made at all: `testedRays` counts them.
   bool updateRow(int element, const std::function<FormFactorRow()>& keptRow, FormFactorRow& row,

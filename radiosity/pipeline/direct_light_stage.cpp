@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 
+#include "meshing/element_stream.h"
 #include "radiosity/core/check.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/rng.h"
@@ -205,7 +206,8 @@ void DirectLightStage::compute(int e) {
   // Not the receiver points: at three fixed interior points the light that pools along an
   // element's edges (under an arcade, beside a wall) is never seen; on the shared atrium that
   // made the indirectly lit parts 5-15% too dark at the default element size (docs/physics.md).
-  Rng jitter(streamKey(seed_ ^ 0x617265616d65616eull, static_cast<uint64_t>(e)));
+  const uint64_t stream = elementStream(mesh_, e);
+  Rng jitter(streamKey(seed_ ^ 0x617265616d65616eull, stream));
   Rgb areaSum;
   const int used =
       forEachExposedStratum(mesh_, exposure_, e, jitter, [&](const Eigen::Vector3d& x, int j) {
@@ -213,8 +215,7 @@ void DirectLightStage::compute(int e) {
           if (samplePointLights_ && isPointLike(scene_.lights[l])) continue;
           areaSum += directIrradiance(
               scene_.lights[l], rays_, x, n,
-              streamKey(seed_ ^ 0x617265616d65616eull, static_cast<uint64_t>(e), 1 + l * 64 + j),
-              cast, kAreaRays);
+              streamKey(seed_ ^ 0x617265616d65616eull, stream, 1 + l * 64 + j), cast, kAreaRays);
         }
         if (samplePointLights_)
           areaSum += sampledPointLightIrradiance(pointLights_, rays_, x, n, jitter.uniform(), cast);
@@ -249,10 +250,9 @@ void DirectLightStage::compute(int e) {
   for (size_t l : lights_)
     for (int k = 0; k < count; ++k)
       if (exposed[k])
-        atPoints[k] += directIrradiance(scene_.lights[l], rays_, points[k], n,
-                                        streamKey(seed_ ^ 0x6c69676874ull, static_cast<uint64_t>(e),
-                                                  l * 3 + static_cast<uint64_t>(k)),
-                                        cast);
+        atPoints[k] += directIrradiance(
+            scene_.lights[l], rays_, points[k], n,
+            streamKey(seed_ ^ 0x6c69676874ull, stream, l * 3 + static_cast<uint64_t>(k)), cast);
   Rgb pointMean;
   for (int k = 0; k < count; ++k)
     if (exposed[k]) pointMean += atPoints[k];

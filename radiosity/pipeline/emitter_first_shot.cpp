@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "meshing/element_stream.h"
 #include "radiosity/core/check.h"
 #include "radiosity/formfactors/point_to_polygon.h"
 #include "radiosity/pipeline/exposed_strata.h"
@@ -68,7 +69,7 @@ void EmitterFirstShot::apply(RadiosityProblem& problem) {
                       for (int e = range.begin(); e < range.end(); ++e) {
                         if (problem.reflectance[e].maxComponent() <= 0) continue;
                         const Eigen::Vector3d n = mesh_.normal(e);
-                        Rng rng(streamKey(seed_ ^ 0x656d6974746572ull, static_cast<uint64_t>(e)));
+                        Rng rng(streamKey(seed_ ^ 0x656d6974746572ull, elementStream(mesh_, e)));
                         Rgb sum;
                         const int used = forEachExposedStratum(
                             mesh_, &exposure_, e, rng,

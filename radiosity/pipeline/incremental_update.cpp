@@ -272,7 +272,8 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   // exposed area and ray budget; the others are cast again.
   FormFactorStage formFactors(solution.scene, mesh, rays, solution.problem, options, &exposure,
                               rayMultipliers);
-  const HemisphereFormFactors::Edit edit{regionCaster, oldCaster, moved};
+  const RayCaster withoutMoved(mesh, solution.scene, moved);
+  const HemisphereFormFactors::Edit edit{regionCaster, oldCaster, moved, withoutMoved};
   std::vector<char> reuse(static_cast<size_t>(n), 0);
   std::vector<int> changedRays(static_cast<size_t>(n), 0), raysTested(static_cast<size_t>(n), 0);
   std::vector<int> keptFrom(static_cast<size_t>(n), -1);  // a row taken as it was: its kept index

@@ -24,15 +24,23 @@ void onEmbreeError(void*, RTCError code, const char* message) {
 
 RayCaster::RayCaster(const PatchMesh& mesh, const VertexMotion* motion) {
   try {
-    build(mesh, motion);
+    build(mesh, motion, nullptr);
   } catch (...) {
     release();  // the destructor does not run for a constructor that throws
     throw;
   }
 }
 
-RayCaster::RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMotion* motion) {
+RayCaster::RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMotion* motion)
+    : RayCaster(mesh, scene, motion, nullptr) {}
+
+RayCaster::RayCaster(const PatchMesh& mesh, const Scene& scene, const std::vector<char>& leftOut)
+    : RayCaster(mesh, scene, nullptr, &leftOut) {}
+
+RayCaster::RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMotion* motion,
+                     const std::vector<char>* leftOut) {
   RAD_CHECK_EQ(mesh.patchCount(), scene.polygons.size());
+  if (leftOut) RAD_CHECK_EQ(leftOut->size(), static_cast<size_t>(mesh.elementCount()));
   // Both sides of a two-sided surface are seen only from the side they face; a polygon whose
   // material is two-sided but has no back copy stays opaque from both sides.
   std::vector<bool> twoSided(scene.polygons.size(), false);
@@ -42,6 +50,7 @@ RayCaster::RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMoti
   for (const Material& m : scene.materials) coverages_.emplace_back(m, scene.textures);
   bool holesWithoutUvs = false;
   for (int e = 0; e < mesh.elementCount(); ++e) {
+    if (leftOut && (*leftOut)[static_cast<size_t>(e)]) continue;
     const int material = mesh.material(e);
     bool holes = coverages_[static_cast<std::size_t>(material)].hasHoles();
     holesWithoutUvs |= holes && !mesh.hasUvs(e);
@@ -58,17 +67,18 @@ RayCaster::RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMoti
     }
     filtered_.push_back(f);
   }
-  if (holesWithoutUvs)
+  if (holesWithoutUvs && !leftOut)  // a caster leaving elements out stands beside the whole one
     logWarning("cut-outs are opaque where their polygons have no texture coordinates");
   try {
-    build(mesh, motion);
+    build(mesh, motion, leftOut);
   } catch (...) {
     release();
     throw;
   }
 }
 
-void RayCaster::build(const PatchMesh& mesh, const VertexMotion* motion) {
+void RayCaster::build(const PatchMesh& mesh, const VertexMotion* motion,
+                      const std::vector<char>* leftOut) {
   if (motion) {  // one displacement per mesh vertex
     RAD_CHECK_EQ(motion->open.size(), mesh.vertexCount());
     RAD_CHECK_EQ(motion->close.size(), mesh.vertexCount());
@@ -94,7 +104,9 @@ void RayCaster::build(const PatchMesh& mesh, const VertexMotion* motion) {
     filtered.push_back(f.element);
   }
   for (int e = 0; e < mesh.elementCount(); ++e)
-    if (!isFiltered[static_cast<std::size_t>(e)]) plain.push_back(e);
+    if (!isFiltered[static_cast<std::size_t>(e)] &&
+        !(leftOut && (*leftOut)[static_cast<size_t>(e)]))
+      plain.push_back(e);
   if (!plain.empty()) addGeometry(mesh, motion, 0, plain, false);
   if (!filtered.empty()) addGeometry(mesh, motion, 1, filtered, true);
   rtcCommitScene(scene_);

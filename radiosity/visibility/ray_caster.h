@@ -45,6 +45,10 @@ class RayCaster {
   // The mesh of `scene` (patch p = scene.polygons[p]): two-sided surfaces and cut-outs as the
   // scene's materials say. `scene` need not outlive the caster.
   RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMotion* motion = nullptr);
+  // The same, without the elements flagged in `leftOut` (an edit's moved or added elements: what
+  // the scene was, their old place aside), in the whole mesh's frame (centre, surface offset), so
+  // that the whole scene's rays can be cast against it. Elements keep their mesh indices.
+  RayCaster(const PatchMesh& mesh, const Scene& scene, const std::vector<char>& leftOut);
   ~RayCaster();
   RayCaster(const RayCaster&) = delete;
   RayCaster& operator=(const RayCaster&) = delete;
@@ -92,7 +96,9 @@ class RayCaster {
   static void filterHits(const RTCFilterFunctionNArguments* args);
   bool stopsRay(unsigned primitive, const Eigen::Vector3f& direction, float u, float v) const;
   void check(const char* what) const;
-  void build(const PatchMesh& mesh, const VertexMotion* motion);
+  RayCaster(const PatchMesh& mesh, const Scene& scene, const VertexMotion* motion,
+            const std::vector<char>* leftOut);
+  void build(const PatchMesh& mesh, const VertexMotion* motion, const std::vector<char>* leftOut);
   void addGeometry(const PatchMesh& mesh, const VertexMotion* motion, unsigned id,
                    const std::vector<int>& elements, bool filtered);
   int elementOf(unsigned geometry, unsigned primitive) const {

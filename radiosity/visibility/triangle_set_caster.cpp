@@ -1,5 +1,6 @@
 #include "radiosity/visibility/triangle_set_caster.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <limits>
 #include <string>
@@ -32,6 +33,12 @@ TriangleSetCaster::TriangleSetCaster(const std::vector<std::array<Eigen::Vector3
     rtcReleaseGeometry(geometry);
     release();
     throw RuntimeFailure("allocating the moved geometry's buffers failed");
+  }
+  normals_.resize(3 * triangles.size());
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const auto& c = triangles[t];
+    const Eigen::Vector3d normal = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
+    for (int d = 0; d < 3; ++d) normals_[3 * t + d] = static_cast<float>(normal[d]);
   }
   for (size_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
@@ -86,7 +93,10 @@ void TriangleSetCaster::release() {
 }
 
 void TriangleSetCaster::distances(int count, const float* const origin[3],
-                                  const float* const direction[3], float* distance) const {
+                                  const float* const direction[3], float* distance,
+                                  int* triangle) const {
+  if (triangle)
+    for (int k = 0; k < count; ++k) triangle[k] = -1;
   if (!scene_) {
     for (int k = 0; k < count; ++k) distance[k] = std::numeric_limits<float>::infinity();
     return;
@@ -117,9 +127,9 @@ void TriangleSetCaster::distances(int count, const float* const origin[3],
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context, &rayHit);
-    distance[k] = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID
-                      ? rayHit.ray.tfar
-                      : std::numeric_limits<float>::infinity();
+    const bool met = rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    distance[k] = met ? rayHit.ray.tfar : std::numeric_limits<float>::infinity();
+    if (triangle && met) triangle[k] = static_cast<int>(rayHit.hit.primID);
   }
 }
 

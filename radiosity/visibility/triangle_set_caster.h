@@ -29,9 +29,16 @@ class TriangleSetCaster {
   const Eigen::Vector3d& boundsMax() const { return hi_; }
   // For each ray (origins and directions in the caster's frame, as RayCaster::closestHits takes
   // them), the distance ahead of its origin to the first triangle it meets, in units of its
-  // direction's length; infinite when it meets none.
+  // direction's length; infinite when it meets none. `triangle`, if given: that triangle's index
+  // (-1 for none).
   void distances(int count, const float* const origin[3], const float* const direction[3],
-                 float* distance) const;
+                 float* distance, int* triangle = nullptr) const;
+  // Whether `direction` meets triangle t's front side (against its right-hand-rule normal, as
+  // PatchMesh::normal, in float as the form-factor rays test an element's).
+  bool meetsFront(int t, const float direction[3]) const {
+    const float* n = &normals_[3 * static_cast<size_t>(t)];
+    return n[0] * direction[0] + n[1] * direction[1] + n[2] * direction[2] < 0;
+  }
 
  private:
   void release();
@@ -41,6 +48,7 @@ class TriangleSetCaster {
   RTCScene scene_ = nullptr;
   Eigen::Vector3d lo_{0, 0, 0}, hi_{0, 0, 0};
   float boxLo_[3] = {0, 0, 0}, boxHi_[3] = {0, 0, 0};  // caster frame, widened
+  std::vector<float> normals_;                         // 3 per triangle
 };
 
 }  // namespace rad

@@ -69,8 +69,10 @@ Rgb pointIrradiance(const Light& light, const Eigen::Vector3d& x, const Eigen::V
 // The solver takes one point in each of kAreaStrata² equal-area strata of the element (a grid over
 // the (s, t) square, which x = (1 − √s) c0 + √s (1 − t) c1 + √s t c2 maps onto the triangle
 // preserving area); each point's value and its stratum's mean lie within the stratum's range, so
-// the estimate is within the mean of those ranges of the true mean. Both come from a 64 × 64 grid
-// of midpoints (the ranges 5% wider for the grid's own coarseness).
+// the estimate is within the mean of those ranges of the true mean. The mean comes from a 64 × 64
+// grid of midpoints, the ranges from the 65 × 65 lattice of their cells' corners, a stratum's own
+// edges among them (where a spot's edge crosses an element, the light peaks at its corner), 5%
+// wider for the lattice's own coarseness.
 struct AreaMean {
   Rgb mean;
   double bound = 0;  // on each channel, relative to the channel's mean
@@ -78,16 +80,27 @@ struct AreaMean {
 AreaMean areaMean(const Light& light, const std::array<Eigen::Vector3d, 3>& c,
                   const Eigen::Vector3d& n) {
   constexpr int kGrid = 64, kPerStratum = kGrid / kAreaStrata;
+  auto at = [&](double s, double t) {
+    const double r = std::sqrt(s);
+    return pointIrradiance(light, (1 - r) * c[0] + r * (1 - t) * c[1] + r * t * c[2], n);
+  };
   AreaMean out;
-  std::vector<double> lo(kAreaStrata * kAreaStrata, 1e300), hi(kAreaStrata * kAreaStrata, 0);
   for (int i = 0; i < kGrid; ++i)
-    for (int j = 0; j < kGrid; ++j) {
-      const double s = (i + 0.5) / kGrid, t = (j + 0.5) / kGrid, r = std::sqrt(s);
-      const Rgb e = pointIrradiance(light, (1 - r) * c[0] + r * (1 - t) * c[1] + r * t * c[2], n);
-      out.mean += e / (kGrid * kGrid);
-      const int stratum = i / kPerStratum + kAreaStrata * (j / kPerStratum);
-      lo[stratum] = std::min(lo[stratum], e.r);
-      hi[stratum] = std::max(hi[stratum], e.r);
+    for (int j = 0; j < kGrid; ++j)
+      out.mean += at((i + 0.5) / kGrid, (j + 0.5) / kGrid) / (kGrid * kGrid);
+  std::vector<double> lo(kAreaStrata * kAreaStrata, 1e300), hi(kAreaStrata * kAreaStrata, 0);
+  for (int i = 0; i <= kGrid; ++i)
+    for (int j = 0; j <= kGrid; ++j) {
+      const double e = at(static_cast<double>(i) / kGrid, static_cast<double>(j) / kGrid).r;
+      // A lattice point on a strata boundary belongs to the strata on both sides of it.
+      for (int si = std::max(0, (i - 1) / kPerStratum);
+           si <= std::min(kAreaStrata - 1, i / kPerStratum); ++si)
+        for (int sj = std::max(0, (j - 1) / kPerStratum);
+             sj <= std::min(kAreaStrata - 1, j / kPerStratum); ++sj) {
+          const int stratum = si + kAreaStrata * sj;
+          lo[stratum] = std::min(lo[stratum], e);
+          hi[stratum] = std::max(hi[stratum], e);
+        }
     }
   double range = 0;
   for (size_t k = 0; k < lo.size(); ++k) range += (hi[k] - lo[k]) / lo.size();

@@ -88,8 +88,11 @@ TEST(CliRenderExposure, AnEmitterInViewDoesNotSetTheAutoExposure) {
       EXPECT_GT(lamp, image.pixels.size() * 3 / 100);
     }
   }
-  // The two solves mesh the box a little differently (the lamp takes elements): a few percent.
-  EXPECT_NEAR(exposure[1] / exposure[0], 1.0, 0.05);
+  // The two solves differ by more than the lamp's pixels: the lamp takes elements (the box is
+  // meshed a little differently), and the rows' ray budgets follow emitted power, which the lamp
+  // dominates, so the box's light shoots with fewer rays: over seeds 1-4 the exposure with the lamp
+  // varied by ±7%, without it by ±1%. Without the rule it would be about 1/1000.
+  EXPECT_NEAR(exposure[1] / exposure[0], 1.0, 0.2);
   fs::remove_all(dir);
 }
 
