@@ -388,8 +388,9 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<FormFacto
     }
     if (!inFront) return true;
   }
-  std::vector<int> cells;
-  const RowSampler sampler(*this, element, cells);
+  // Reused buffers (most rows of a large scene pass through here: no allocation per row).
+  RowBuffer cells, aimedRays;
+  const RowSampler sampler(*this, element, cells.get());
   const bool partlyBuried =
       options_.exposure != nullptr && options_.exposure->buriedCells(element) != 0;
   // The rays that meet the region no farther than their first hit, and what they hit.
@@ -459,7 +460,7 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<FormFacto
       if (oldTarget != newTarget) changed.push_back({oldTarget, newTarget});
     }
   };
-  std::vector<int> aimed;
+  std::vector<int>& aimed = aimedRays.get();
   if (partlyBuried || !raysAimedAt(element, sampler, edit.region, aimed)) {
     // Every ray may meet the region: all of them, counting the exposed ones.
     for (int begin = 0; begin < sampler.count(); begin += RayBlock::kSize) {

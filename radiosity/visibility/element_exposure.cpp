@@ -27,13 +27,12 @@ std::array<Eigen::Vector3d, 4> probeDirections(const Eigen::Vector3d& n) {
 }
 
 struct Prober {
-  const PatchMesh& mesh;
   const RayCaster& rays;
+  const std::vector<Eigen::Vector3d>& normals;  // per element, PatchMesh::normal (once each)
 
-  // Every probe from the point at (s, t) of element e hits the back of a surface.
-  bool buriedAt(int e, double s, double t, const std::array<Eigen::Vector3d, 4>& directions,
-                uint64_t& cast) const {
-    const auto c = mesh.corners(e);
+  // Every probe from the point at (s, t) of element e (corners c) hits the back of a surface.
+  bool buriedAt(int e, const std::array<Eigen::Vector3d, 3>& c, double s, double t,
+                const std::array<Eigen::Vector3d, 4>& directions, uint64_t& cast) const {
     const Eigen::Vector2d w = triangleWeights(s, t);
     const Eigen::Vector3d p = c[0] + w[0] * (c[1] - c[0]) + w[1] * (c[2] - c[0]);
     const Eigen::Vector3d n = directions[0];
@@ -41,7 +40,8 @@ struct Prober {
     for (const Eigen::Vector3d& d : directions) {
       ++cast;
       const RayHit hit = rays.closestHit(origin, d);
-      if (!hit.hit() || hit.element == e || mesh.normal(hit.element).dot(d) < 0) return false;
+      if (!hit.hit() || hit.element == e || normals[static_cast<size_t>(hit.element)].dot(d) < 0)
+        return false;
     }
     return true;
   }
@@ -53,16 +53,24 @@ ElementExposure::ElementExposure(const PatchMesh& mesh, const RayCaster& rays) {
   const int n = mesh.elementCount();
   buried_.assign(n, 0);
   std::vector<uint64_t> cast(n, 0);
-  const Prober prober{mesh, rays};
+  // A probe's hit needs the normal of what it hit: computed once per element, not per probe (it
+  // walks the element's corners in the OpenMesh structure).
+  std::vector<Eigen::Vector3d> normals(static_cast<size_t>(n));
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 1024), [&](const tbb::blocked_range<int>& r) {
+    for (int e = r.begin(); e < r.end(); ++e) normals[static_cast<size_t>(e)] = mesh.normal(e);
+  });
+  const Prober prober{rays, normals};
   constexpr double kCell = 1.0 / kGrid;
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 16), [&](const tbb::blocked_range<int>& range) {
     for (int e = range.begin(); e < range.end(); ++e) {
-      const auto directions = probeDirections(mesh.normal(e));
+      const auto directions = probeDirections(normals[static_cast<size_t>(e)]);
+      const auto corners = mesh.corners(e);
       // The 4×4 blocks, each probed at its centre (a corner shared by its four cells).
       uint64_t cells = 0;
       for (int by = 0; by < kGrid / 2; ++by)
         for (int bx = 0; bx < kGrid / 2; ++bx) {
-          if (!prober.buriedAt(e, (2 * bx + 1) * kCell, (2 * by + 1) * kCell, directions, cast[e]))
+          if (!prober.buriedAt(e, corners, (2 * bx + 1) * kCell, (2 * by + 1) * kCell, directions,
+                               cast[e]))
             continue;
           for (int y = 2 * by; y < 2 * by + 2; ++y)
             for (int x = 2 * bx; x < 2 * bx + 2; ++x) cells |= uint64_t{1} << (y * kGrid + x);
@@ -71,7 +79,8 @@ ElementExposure::ElementExposure(const PatchMesh& mesh, const RayCaster& rays) {
         cells = 0;
         for (int y = 0; y < kGrid; ++y)
           for (int x = 0; x < kGrid; ++x)
-            if (prober.buriedAt(e, (x + 0.5) * kCell, (y + 0.5) * kCell, directions, cast[e]))
+            if (prober.buriedAt(e, corners, (x + 0.5) * kCell, (y + 0.5) * kCell, directions,
+                                cast[e]))
               cells |= uint64_t{1} << (y * kGrid + x);
       }
       buried_[e] = cells;
