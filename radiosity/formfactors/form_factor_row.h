@@ -1,6 +1,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "radiosity/core/rgb.h"
@@ -35,6 +37,17 @@ struct FormFactorRow {
     return s;
   }
   double valueFor(int target) const;  // 0 when the target is not in the row
+};
+
+// How an update changes a kept hemisphere row (HemisphereFormFactors::updateRow), in rays: each
+// factor of the row is a count of its `counted` rays over `counted`. `escaped` is the change in
+// the escaped count; `counts`, per target whose count changes, by how much (sorted by target, no
+// zero changes). None of either: the row is as it was.
+struct RowChanges {
+  int counted = 0;
+  int64_t escaped = 0;
+  std::vector<std::pair<int, int>> counts;
+  bool none() const { return escaped == 0 && counts.empty(); }
 };
 
 }  // namespace rad

@@ -366,12 +366,13 @@ bool HemisphereFormFactors::raysAimedAt(int element, const RowSampler& sampler,
   return true;
 }
 
-bool HemisphereFormFactors::updateRow(int element, const std::function<FormFactorRow()>& keptRow,
-                                      FormFactorRow& row, const Edit& edit, int& changedRays,
-                                      int& testedRays) const {
+bool HemisphereFormFactors::updateRow(int element, const std::function<double(int)>& keptFactor,
+                                      double keptEscaped, RowChanges& changes, const Edit& edit,
+                                      int& changedRays, int& testedRays) const {
   RAD_CHECK_MSG(options_.specular.empty(), "rows through mirrors and glass are not updated");
   changedRays = 0;
   testedRays = 0;
+  changes = RowChanges();
   if (edit.region.empty()) return true;
   // Rays leave into the element's front half-space only: a region wholly behind its plane (every
   // corner of its bounds) is never met.
@@ -481,12 +482,10 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<FormFacto
     }
   }
   changedRays = static_cast<int>(changed.size());
+  changes.counted = counted;
   if (changed.empty()) return true;
-  row = keptRow();
-  // Counts from the row's fractions (exact: count / counted is what assemble stored), changed,
-  // and back to fractions as assemble writes them. The changes, a few per row, sorted by target
-  // (-1: escaped, first), are merged into the row's targets, which are in ascending order.
-  const double perRay = counted > 0 ? 1.0 / counted : 0.0;
+  // Counts from the kept row's fractions (exact: count / counted is what assemble stored); the
+  // changes, a few per row, sorted by target (-1: escaped, first), summed per target.
   std::vector<std::pair<int, int>> delta;  // target, change in its count
   delta.reserve(2 * changed.size());       // each change: -1 and +1
   for (const Changed& c : changed) {
@@ -495,30 +494,16 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<FormFacto
   }
   std::sort(delta.begin(), delta.end());
   size_t j = 0;
-  int64_t escaped = std::llround(row.escaped * counted);
-  for (; j < delta.size() && delta[j].first < 0; ++j) escaped += delta[j].second;
-  if (escaped < 0) return false;
-  FormFactorRow updated;
-  updated.targets.reserve(row.targets.size() + delta.size() - j);
-  updated.values.reserve(row.targets.size() + delta.size() - j);
-  for (size_t k = 0; k < row.targets.size() || j < delta.size();) {
-    const bool fromRow =
-        k < row.targets.size() && (j == delta.size() || row.targets[k] <= delta[j].first);
-    const int target = fromRow ? row.targets[k] : delta[j].first;
-    int64_t sum = 0;
-    if (fromRow) {
-      RAD_CHECK_MSG(k == 0 || row.targets[k - 1] < target, "updateRow: a kept row out of order");
-      sum = std::llround(row.values[k++] * counted);
-    }
+  for (; j < delta.size() && delta[j].first < 0; ++j) changes.escaped += delta[j].second;
+  if (std::llround(keptEscaped * counted) + changes.escaped < 0) return false;
+  while (j < delta.size()) {
+    const int target = delta[j].first;
+    int sum = 0;
     for (; j < delta.size() && delta[j].first == target; ++j) sum += delta[j].second;
-    if (sum < 0) return false;
-    if (sum > 0) {
-      updated.targets.push_back(target);
-      updated.values.push_back(static_cast<double>(sum) * perRay);
-    }
+    if (sum == 0) continue;
+    if (std::llround(keptFactor(target) * counted) + sum < 0) return false;
+    changes.counts.emplace_back(target, sum);
   }
-  updated.escaped = counted > 0 ? static_cast<double>(escaped) * perRay : 1.0;
-  row = std::move(updated);
   return true;
 }
 

@@ -67,10 +67,11 @@ class HemisphereFormFactors {
     const std::vector<char>& moved;
     const RayCaster& withoutMoved;  // the scene without the moved elements, in the same frame
   };
-  // Brings element's row from before the edit (`keptRow()`: renumbered to the scene's elements,
-  // the entries of elements no longer there left out; asked for only when a ray's hit changed,
-  // and then brought up to date into `row`) up to date ray by ray, casting only the rays
-  // that meet the edit's region no farther than their first hit in the scene. The rays are the
+  // Brings element's row from before the edit up to date ray by ray, casting only the rays that
+  // meet the edit's region no farther than their first hit in the scene: `changes` says how its
+  // counts change (the row itself is not made: the caller merges them into the kept row).
+  // `keptFactor(t)`: the kept row's factor to target t of the scene's elements (0 for none, and
+  // for elements no longer there); `keptEscaped` its escaped fraction. The rays are the
   // very rays computeRow(element) casts (the same random streams). A ray whose first hit comes
   // before the region hits the same element before and after the edit; one that meets it first
   // has its new hit added and its old one taken away: the first of its hit on the old place (an
@@ -82,8 +83,8 @@ class HemisphereFormFactors {
   // below zero (such a tie): cast the row again. Scenes with mirrors or glass: rays continue
   // past their first hit, so not answered (RAD_CHECK). Only the rays whose direction stratum can
   // point at the region from the element are made at all: `testedRays` counts them.
-  bool updateRow(int element, const std::function<FormFactorRow()>& keptRow, FormFactorRow& row,
-                 const Edit& edit, int& changedRays, int& testedRays) const;
+  bool updateRow(int element, const std::function<double(int)>& keptFactor, double keptEscaped,
+                 RowChanges& changes, const Edit& edit, int& changedRays, int& testedRays) const;
   int raysForRow(int element) const {
     return options_.rayMultiplier.empty()
                ? options_.raysPerElement

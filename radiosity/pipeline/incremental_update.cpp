@@ -60,32 +60,6 @@ std::vector<int> matchElements(const KeptFactors& kept, const PatchMesh& mesh) {
   return match;
 }
 
-// Kept row `row` in the new element numbering, the entries of kept elements no longer in the mesh
-// left out (the rays that hit them meet the edit's old place first: updateRow adds their new hits).
-void renumber(FormFactorRow& row, const std::vector<int>& newIndexOfOld) {
-  // In place; the kept elements keep their order in the new mesh (it meshes the polygons in file
-  // order), so the targets mostly stay sorted and need no sort.
-  size_t count = 0;
-  bool sorted = true;
-  for (size_t k = 0; k < row.targets.size(); ++k) {
-    const int to = newIndexOfOld[static_cast<size_t>(row.targets[k])];
-    if (to < 0) continue;
-    sorted = sorted && (count == 0 || row.targets[count - 1] < to);
-    row.targets[count] = to;
-    row.values[count++] = row.values[k];
-  }
-  row.targets.resize(count);
-  row.values.resize(count);
-  if (sorted) return;
-  std::vector<std::pair<int, double>> entries(count);
-  for (size_t k = 0; k < count; ++k) entries[k] = {row.targets[k], row.values[k]};
-  std::sort(entries.begin(), entries.end());
-  for (size_t k = 0; k < count; ++k) {
-    row.targets[k] = entries[k].first;
-    row.values[k] = entries[k].second;
-  }
-}
-
 bool sameArea(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(a, b); }
 
 // Whether the scene's lights are, bit for bit, those the kept solve cast its direct light from
@@ -276,8 +250,9 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   const HemisphereFormFactors::Edit edit{regionCaster, oldCaster, moved, withoutMoved};
   std::vector<char> reuse(static_cast<size_t>(n), 0);
   std::vector<int> changedRays(static_cast<size_t>(n), 0), raysTested(static_cast<size_t>(n), 0);
-  std::vector<int> keptFrom(static_cast<size_t>(n), -1);  // a row taken as it was: its kept index
-  std::vector<FormFactorRow> rows(static_cast<size_t>(n));
+  std::vector<int> keptFrom(static_cast<size_t>(n), -1);    // a row taken over: its kept index
+  std::vector<RowChanges> changes(static_cast<size_t>(n));  // and how its counts change
+  std::vector<FormFactorRow> rows(static_cast<size_t>(n));  // empty stand-ins for those
   t = Clock::now();
   std::vector<int> candidates;
   for (int e = 0; e < n; ++e) {
@@ -293,30 +268,31 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   uint64_t candidateRays = 0;
   for (int e : candidates) candidateRays += formFactors.hemisphere().raysForRow(e);
   Progress progress("rays of the kept rows examined", candidateRays, "rays");
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, candidates.size(), 16),
-                    [&](const tbb::blocked_range<size_t>& range) {
-                      for (size_t k = range.begin(); k != range.end(); ++k) {
-                        const int e = candidates[k];
-                        const int old = match[static_cast<size_t>(e)];
-                        auto keptRow = [&] {
-                          FormFactorRow row = kept.rows.row(static_cast<size_t>(old));
-                          renumber(row, newIndexOfOld);
-                          return row;
-                        };
-                        FormFactorRow row;
-                        if (formFactors.hemisphere().updateRow(e, keptRow, row, edit,
-                                                               changedRays[e], raysTested[e])) {
-                          reuse[static_cast<size_t>(e)] = 1;
-                          // An unchanged row goes from the kept table to the new one directly; the
-                          // stage holds an empty stand-in meanwhile.
-                          if (changedRays[e] > 0)
-                            rows[static_cast<size_t>(e)] = std::move(row);
-                          else
-                            keptFrom[static_cast<size_t>(e)] = old;
-                        }
-                        progress.advance(formFactors.hemisphere().raysForRow(e));
-                      }
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, candidates.size(), 16),
+      [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t k = range.begin(); k != range.end(); ++k) {
+          const int e = candidates[k];
+          const int old = match[static_cast<size_t>(e)];
+          const KeptRowTable::RowView keptRow = kept.rows.view(static_cast<size_t>(old));
+          // Its factor to target t (new numbering): t's kept index in the kept row.
+          auto keptFactor = [&](int t) {
+            const int was = match[static_cast<size_t>(t)];
+            const int* end = keptRow.targets + keptRow.count;
+            const int* at = std::lower_bound(keptRow.targets, end, was);
+            return was >= 0 && at != end && *at == was ? keptRow.values[at - keptRow.targets] : 0.0;
+          };
+          if (formFactors.hemisphere().updateRow(e, keptFactor, keptRow.escaped,
+                                                 changes[static_cast<size_t>(e)], edit,
+                                                 changedRays[e], raysTested[e])) {
+            reuse[static_cast<size_t>(e)] = 1;
+            // The row goes from the kept table to the new one directly, its changes
+            // merged in; the stage holds an empty stand-in meanwhile.
+            keptFrom[static_cast<size_t>(e)] = old;
+          }
+          progress.advance(formFactors.hemisphere().raysForRow(e));
+        }
+      });
   progress.finish(std::to_string(candidates.size()) + " rows");
   update.raysOfKeptRows = candidateRays;
   for (int e : candidates) {
@@ -341,7 +317,7 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
           std::to_string(update.rowsOtherChange) +
           " with another exposed area or ray budget); in " + formatNumber(testSeconds) + " s");
   formFactors.adoptRows(std::move(rows), reuse);
-  next->rows = KeptRowTable(formFactors.takeAllRows(), kept.rows, keptFrom, newIndexOfOld);
+  next->rows = KeptRowTable(formFactors.takeAllRows(), kept.rows, keptFrom, newIndexOfOld, changes);
   next->fingerprint = keptFactorsFingerprint(solution.scene, options);
   next->options = options;
 

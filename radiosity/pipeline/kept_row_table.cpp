@@ -46,24 +46,81 @@ KeptRowTable::KeptRowTable(const std::vector<FormFactorRow>& rows) {
   }
 }
 
+namespace {
+
+// Row `v` of a kept table renumbered (entries mapped to -1 left out) into `out`, sorted by target,
+// with `changes` merged in: a changed entry's factor is its count, changed, over the rays counted
+// (as assemble writes it), an entry whose count falls to 0 is left out. Returns its escaped
+// fraction.
+double renumberedRow(const KeptRowTable::RowView& v, const std::vector<int>& newIndexOf,
+                     const RowChanges* changes, std::vector<std::pair<int, double>>& out) {
+  out.clear();
+  bool sorted = true;
+  for (size_t k = 0; k < v.count; ++k) {
+    const int to = newIndexOf[static_cast<size_t>(v.targets[k])];
+    if (to < 0) continue;
+    sorted = sorted && (out.empty() || out.back().first < to);
+    out.emplace_back(to, v.values[k]);
+  }
+  // The kept elements keep their order in the new mesh, so this is rare.
+  if (!sorted) std::sort(out.begin(), out.end());
+  if (!changes || changes->none()) return v.escaped;
+  const int counted = changes->counted;
+  RAD_CHECK(counted > 0);
+  const double perRay = 1.0 / counted;
+  auto changed = [&](double factor, int change) {
+    const int64_t count = std::llround(factor * counted) + change;
+    RAD_CHECK_GE(count, 0);  // updateRow refuses a change that takes a count below zero
+    return static_cast<double>(count) * perRay;
+  };
+  // Merged in place from the back: the changes' new targets go in between.
+  size_t k = out.size();
+  size_t added = 0;
+  for (const auto& [target, change] : changes->counts) {
+    const auto at = std::lower_bound(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(k),
+                                     std::make_pair(target, -1.0));
+    added += at == out.begin() + static_cast<std::ptrdiff_t>(k) || at->first != target;
+  }
+  out.resize(k + added);
+  size_t write = out.size();
+  for (size_t c = changes->counts.size(); c-- > 0;) {
+    const auto [target, change] = changes->counts[c];
+    while (k > 0 && out[k - 1].first > target) out[--write] = out[--k];
+    if (k > 0 && out[k - 1].first == target)
+      out[--write] = {target, changed(out[--k].second, change)};
+    else
+      out[--write] = {target, changed(0.0, change)};
+  }
+  RAD_CHECK_EQ(write, k);  // the entries before the first change stay where they are
+  out.erase(std::remove_if(out.begin(), out.end(), [](const auto& e) { return e.second == 0; }),
+            out.end());
+  return changed(v.escaped, static_cast<int>(changes->escaped));
+}
+
+}  // namespace
+
 KeptRowTable::KeptRowTable(const std::vector<FormFactorRow>& rows, const KeptRowTable& kept,
-                           const std::vector<int>& keptFrom, const std::vector<int>& newIndexOf) {
+                           const std::vector<int>& keptFrom, const std::vector<int>& newIndexOf,
+                           const std::vector<RowChanges>& changes) {
   RAD_CHECK_EQ(rows.size(), keptFrom.size());
+  RAD_CHECK(changes.empty() || changes.size() == rows.size());
   RAD_CHECK(!kept.anyTinted());
   const size_t n = rows.size();
+  auto changesOf = [&](size_t i) { return changes.empty() ? nullptr : &changes[i]; };
   std::vector<size_t> count(n);
+  std::vector<double> escaped(n);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256),
                     [&](const tbb::blocked_range<size_t>& r) {
+                      std::vector<std::pair<int, double>> row;
                       for (size_t i = r.begin(); i != r.end(); ++i) {
                         if (keptFrom[i] < 0) {
                           count[i] = rows[i].targets.size();
+                          escaped[i] = rows[i].escaped;
                           continue;
                         }
-                        const RowView v = kept.view(static_cast<size_t>(keptFrom[i]));
-                        size_t c = 0;
-                        for (size_t k = 0; k < v.count; ++k)
-                          c += newIndexOf[static_cast<size_t>(v.targets[k])] >= 0;
-                        count[i] = c;
+                        escaped[i] = renumberedRow(kept.view(static_cast<size_t>(keptFrom[i])),
+                                                   newIndexOf, changesOf(i), row);
+                        count[i] = row.size();
                       }
                     });
   size_t factors = 0;
@@ -75,45 +132,29 @@ KeptRowTable::KeptRowTable(const std::vector<FormFactorRow>& rows, const KeptRow
   f_.data().resize(static_cast<Eigen::Index>(factors));
   tbb::parallel_for(
       tbb::blocked_range<size_t>(0, n, 256), [&](const tbb::blocked_range<size_t>& r) {
-        std::vector<std::pair<int, double>> unsorted;
+        std::vector<std::pair<int, double>> row;
         for (size_t i = r.begin(); i != r.end(); ++i) {
           int* targets = f_.innerIndexPtr() + outer[i];
           double* values = f_.valuePtr() + outer[i];
           if (keptFrom[i] < 0) {
-            const FormFactorRow& row = rows[i];
-            RAD_CHECK(row.tinted.empty());
-            for (size_t k = 0; k < row.targets.size(); ++k) {
-              targets[k] = row.targets[k];
-              values[k] = static_cast<float>(row.values[k]);  // as factors.bin keeps them
+            const FormFactorRow& fresh = rows[i];
+            RAD_CHECK(fresh.tinted.empty());
+            for (size_t k = 0; k < fresh.targets.size(); ++k) {
+              targets[k] = fresh.targets[k];
+              values[k] = static_cast<float>(fresh.values[k]);  // as factors.bin keeps them
             }
             continue;
           }
-          const RowView v = kept.view(static_cast<size_t>(keptFrom[i]));
-          size_t c = 0;
-          bool sorted = true;
-          for (size_t k = 0; k < v.count; ++k) {
-            const int to = newIndexOf[static_cast<size_t>(v.targets[k])];
-            if (to < 0) continue;
-            sorted = sorted && (c == 0 || targets[c - 1] < to);
-            targets[c] = to;
-            values[c++] = v.values[k];
-          }
-          if (sorted) continue;
-          // The kept elements keep their order in the new mesh, so this is rare.
-          unsorted.clear();
-          for (size_t k = 0; k < c; ++k) unsorted.emplace_back(targets[k], values[k]);
-          std::sort(unsorted.begin(), unsorted.end());
-          for (size_t k = 0; k < c; ++k) {
-            targets[k] = unsorted[k].first;
-            values[k] = unsorted[k].second;
+          renumberedRow(kept.view(static_cast<size_t>(keptFrom[i])), newIndexOf, changesOf(i), row);
+          RAD_CHECK_EQ(row.size(), count[i]);
+          for (size_t k = 0; k < row.size(); ++k) {
+            targets[k] = row[k].first;
+            values[k] = static_cast<float>(row[k].second);  // as factors.bin keeps them
           }
         }
       });
-  for (size_t i = 0; i < n; ++i) {
-    escaped_.push_back(keptFrom[i] < 0 ? rows[i].escaped
-                                       : kept.view(static_cast<size_t>(keptFrom[i])).escaped);
-    tinted_.emplace_back();
-  }
+  escaped_ = std::move(escaped);
+  tinted_.resize(n);
 }
 
 void KeptRowTable::reserve(size_t rows, size_t maxFactors) {

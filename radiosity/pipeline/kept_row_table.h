@@ -23,10 +23,12 @@ class KeptRowTable {
   explicit KeptRowTable(const std::vector<FormFactorRow>& rows);
   // An update's rows: rows[i] where keptFrom[i] < 0; otherwise row keptFrom[i] of `kept` (no row
   // of it tinted) with each target t renumbered to newIndexOf[t], the entries mapped to -1 left
-  // out, copied straight from one table to the other (no vector per row: for a large scene that
-  // was a second of fresh pages and copies).
+  // out, and changes[i] (targets in the new numbering) merged in, copied straight from one table
+  // to the other (no vector per row: for a large scene that was a second of fresh pages and
+  // copies). `changes` is empty or holds one per row.
   KeptRowTable(const std::vector<FormFactorRow>& rows, const KeptRowTable& kept,
-               const std::vector<int>& keptFrom, const std::vector<int>& newIndexOf);
+               const std::vector<int>& keptFrom, const std::vector<int>& newIndexOf,
+               const std::vector<RowChanges>& changes = {});
   // Moves swap: Eigen 3.4's SparseMatrix "move" copies every entry (half a second for a large
   // scene's rows, each time a KeptFactors is returned or passed on).
   KeptRowTable(KeptRowTable&& other) noexcept { swap(other); }

@@ -122,6 +122,34 @@ TEST(KeptRowTable, AnUpdatesRowsAreTheKeptRowsRenumberedBesideTheNewOnes) {
   EXPECT_EQ(table.factorCount(), 6u);
 }
 
+// update's rows brought up to date ray by ray: a kept row of 8 rays, renumbered (two targets
+// swapped), with its changes in ray counts merged in: a new target, one whose count falls to 0
+// (left out), one that grows, and fewer escaped rays. Each factor is its count over 8.
+TEST(KeptRowTable, AnUpdatesChangedRowHasItsChangesMergedIntoTheRenumberedKeptRow) {
+  std::vector<FormFactorRow> old(4);
+  old[0].targets = {1, 2, 3};
+  old[0].values = {2.0 / 8, 1.0 / 8, 3.0 / 8};
+  old[0].escaped = 2.0 / 8;
+  const KeptRowTable kept(old);
+  const std::vector<int> newIndexOf = {0, 1, 3, 2};  // old 2 and 3 swap places
+  RowChanges changes;
+  changes.counted = 8;
+  changes.escaped = -1;
+  changes.counts = {{0, 1}, {2, -3}, {3, 3}};  // new numbering: old 3 is 2, old 2 is 3
+  std::vector<RowChanges> all(4);
+  all[0] = changes;
+  const KeptRowTable table(std::vector<FormFactorRow>(4), kept, {0, 1, 2, 3}, newIndexOf, all);
+  const FormFactorRow r = table.row(0);
+  EXPECT_EQ(r.targets, (std::vector<int>{0, 1, 3}));
+  EXPECT_EQ(r.values, (std::vector<double>{1.0 / 8, 2.0 / 8, 4.0 / 8}));
+  EXPECT_EQ(r.escaped, 1.0 / 8);
+  EXPECT_EQ(table.factorCount(), 3u);
+  // A change that would take a count below zero is refused before it gets here: a check.
+  all[0].counts = {{1, -3}};
+  EXPECT_THROW(KeptRowTable(std::vector<FormFactorRow>(4), kept, {0, 1, 2, 3}, newIndexOf, all),
+               CheckFailure);
+}
+
 // update lends F to Gauss–Seidel and keeps the table for factors.bin: the matrix comes back as
 // it went, and the rows cannot be read while it is away.
 TEST(KeptRowTable, ALentMatrixComesBackAndTheRowsWithIt) {
