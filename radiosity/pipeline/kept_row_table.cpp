@@ -118,9 +118,18 @@ KeptRowTable::KeptRowTable(const std::vector<FormFactorRow>& rows, const KeptRow
                           escaped[i] = rows[i].escaped;
                           continue;
                         }
-                        escaped[i] = renumberedRow(kept.view(static_cast<size_t>(keptFrom[i])),
-                                                   newIndexOf, changesOf(i), row);
-                        count[i] = row.size();
+                        const RowView v = kept.view(static_cast<size_t>(keptFrom[i]));
+                        const RowChanges* changed = changesOf(i);
+                        if (changed && !changed->none()) {
+                          escaped[i] = renumberedRow(v, newIndexOf, changed, row);
+                          count[i] = row.size();
+                          continue;
+                        }
+                        escaped[i] = v.escaped;  // unchanged: only the entries left out to count
+                        size_t c = 0;
+                        for (size_t k = 0; k < v.count; ++k)
+                          c += newIndexOf[static_cast<size_t>(v.targets[k])] >= 0;
+                        count[i] = c;
                       }
                     });
   size_t factors = 0;
