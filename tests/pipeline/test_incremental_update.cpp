@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -96,19 +98,34 @@ class IncrementalUpdate : public ::testing::Test {
     std::error_code ec;
     fs::remove_all(dir_, ec);
   }
+  // The user's edit: a kept solve of the scene `writeBefore` writes, the scene rewritten by
+  // `writeAfter` and brought up to date by update, and a fresh solve of the same edited scene.
+  struct Edited {
+    SolveResult before, updated, reference;
+  };
+  Edited solveEditAndUpdate(
+      const std::function<void(const fs::path&)>& writeBefore,
+      const std::function<void(const fs::path&)>& writeAfter,
+      const std::function<SolveOptions(const fs::path&)>& optionsFor = options) {
+    const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
+    writeBefore(scene);
+    SolveResult before = runSolve(optionsFor(scene));
+    if (!before.kept) throw std::runtime_error("the solve kept no factors");
+    writeAfter(scene);
+    writeAfter(fresh);
+    SolveResult updated =
+        updateKeptSolve(*before.kept, "kept", before.solution.radiosity, optionsFor(scene));
+    return {std::move(before), std::move(updated), runSolve(optionsFor(fresh))};
+  }
   fs::path dir_;
 };
 
 TEST_F(IncrementalUpdate, MovedBlockEqualsAFreshSolveAndReusesTheRowsItCannotChange) {
-  const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
-  writeCornell(scene, 0);
-  const SolveResult before = runSolve(options(scene));
+  // The user moves the short block 5 cm towards the red wall.
+  const auto [before, updated, reference] =
+      solveEditAndUpdate([](const fs::path& d) { writeCornell(d, 0); },
+                         [](const fs::path& d) { writeCornell(d, -0.05); });
   ASSERT_TRUE(before.kept);
-  writeCornell(scene, -0.05);  // the user moves the short block 5 cm towards the red wall
-  writeCornell(fresh, -0.05);
-  const SolveResult updated =
-      updateKeptSolve(*before.kept, "kept", before.solution.radiosity, options(scene));
-  const SolveResult reference = runSolve(options(fresh));
 
   const int n = updated.solution.mesh->elementCount();
   ASSERT_EQ(n, reference.solution.mesh->elementCount());
@@ -162,20 +179,15 @@ void writeCourtyard(const fs::path& dir, double dx) {
 }
 
 TEST_F(IncrementalUpdate, RaysPointingAwayFromASmallEditAreNotMadeAndTheRowsStayExact) {
-  const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
   auto courtyard = [](const fs::path& dir) {
     SolveOptions o = options(dir);
     o.scenePath = (dir / "courtyard.obj").string();
     o.elementSize = 0.5;
     return o;
   };
-  writeCourtyard(scene, 0);
-  const SolveResult before = runSolve(courtyard(scene));
-  writeCourtyard(scene, 0.3);
-  writeCourtyard(fresh, 0.3);
-  const SolveResult updated =
-      updateKeptSolve(*before.kept, "kept", before.solution.radiosity, courtyard(scene));
-  const SolveResult reference = runSolve(courtyard(fresh));
+  const auto [before, updated, reference] =
+      solveEditAndUpdate([](const fs::path& d) { writeCourtyard(d, 0); },
+                         [](const fs::path& d) { writeCourtyard(d, 0.3); }, courtyard);
   const int n = updated.solution.mesh->elementCount();
   ASSERT_EQ(n, reference.solution.mesh->elementCount());
   expectSameRows(updated.kept->rows, reference.kept->rows);
@@ -198,14 +210,9 @@ TEST_F(IncrementalUpdate, DirectLightIsKeptOnlyWhereTheEditCannotShadowIt) {
       {"type": "directional", "direction": [0.3, -0.5, 1], "irradiance": [2, 2, 1.6],
        "angular_diameter_degrees": 0.53},
       {"type": "sky", "radiance": [0.2, 0.3, 0.5]}]})";
-  const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
-  writeCornell(scene, 0, lights);
-  const SolveResult before = runSolve(options(scene));
-  writeCornell(scene, -0.05, lights);
-  writeCornell(fresh, -0.05, lights);
-  const SolveResult updated =
-      updateKeptSolve(*before.kept, "kept", before.solution.radiosity, options(scene));
-  const SolveResult reference = runSolve(options(fresh));
+  const auto [before, updated, reference] =
+      solveEditAndUpdate([&](const fs::path& d) { writeCornell(d, 0, lights); },
+                         [&](const fs::path& d) { writeCornell(d, -0.05, lights); });
   const size_t n = static_cast<size_t>(updated.solution.mesh->elementCount());
   ASSERT_EQ(updated.kept->lightIrradiance.size(), 3u);
   int64_t keptPairs = 0;
@@ -243,16 +250,11 @@ TEST_F(IncrementalUpdate, DirectLightIsKeptOnlyWhereTheEditCannotShadowIt) {
 // light is from the old lamp, so none of it may be kept, even where the new lamp's rays miss the
 // block; every element's must be the fresh solve's.
 TEST_F(IncrementalUpdate, DirectLightIsCastAgainWhenALightChanged) {
-  const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
-  writeCornell(scene, 0);
-  const SolveResult before = runSolve(options(scene));
   const char* const moved = R"({"lights": [{"type": "point", "position": [0.2, 0.45, 0.3],
                                 "intensity": [0.3, 0.18, 0.06]}]})";
-  writeCornell(scene, -0.05, moved);
-  writeCornell(fresh, -0.05, moved);
-  const SolveResult updated =
-      updateKeptSolve(*before.kept, "kept", before.solution.radiosity, options(scene));
-  const SolveResult reference = runSolve(options(fresh));
+  const auto [before, updated, reference] =
+      solveEditAndUpdate([](const fs::path& d) { writeCornell(d, 0); },
+                         [&](const fs::path& d) { writeCornell(d, -0.05, moved); });
   EXPECT_EQ(updated.report.update.directLightKept, 0);
   const std::vector<Rgb>& a = updated.kept->lightIrradiance[0];
   const std::vector<Rgb>& b = reference.kept->lightIrradiance[0];
@@ -296,14 +298,9 @@ TEST_F(IncrementalUpdate, ACrateAddedAheadOfEveryElementLeavesTheRenumberedRowsE
       {"type": "point", "position": [0.45, 0.45, 0.1], "intensity": [0.3, 0.18, 0.06]},
       {"type": "directional", "direction": [0.3, -0.5, 1], "irradiance": [2, 2, 1.6],
        "angular_diameter_degrees": 0.53}]})";
-  const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
-  writeCornell(scene, 0, lights);
-  const SolveResult before = runSolve(options(scene));
-  writeCornellWithCrateFirst(scene, lights);
-  writeCornellWithCrateFirst(fresh, lights);
-  const SolveResult updated =
-      updateKeptSolve(*before.kept, "kept", before.solution.radiosity, options(scene));
-  const SolveResult reference = runSolve(options(fresh));
+  const auto [before, updated, reference] =
+      solveEditAndUpdate([&](const fs::path& d) { writeCornell(d, 0, lights); },
+                         [&](const fs::path& d) { writeCornellWithCrateFirst(d, lights); });
   const int n = updated.solution.mesh->elementCount();
   ASSERT_EQ(n, reference.solution.mesh->elementCount());
   const SolveReport::Update& u = updated.report.update;
