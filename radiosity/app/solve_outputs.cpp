@@ -201,7 +201,7 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
     factors = std::make_unique<AtomicFile>((dir / kKeptFactorsFile).string(), /*binary=*/true);
     files.push_back(factors.get());
   }
-  const auto writeCsv = [&] { writeElementsCsv(csv.stream(), mesh, solution.radiosity); };
+  const auto writeCsv = [&] { writeSolutionElementsCsv(csv.stream(), solution); };
   const auto writePly = [&] {
     const VertexInterpolation interpolation(mesh, solution.problem.area);  // exposed areas
     const std::vector<Rgb> vertexRadiance =

@@ -53,7 +53,7 @@ void runUpdate(const UpdateOptions& o) {
       std::async(std::launch::async, [&keptPath] { return readKeptFactors(keptPath); });
   std::future<std::vector<Rgb>> readingPrevious = std::async(std::launch::async, [&csvPath] {
     std::vector<Rgb> b;
-    for (const ElementsCsvRow& row : readElementsCsv(csvPath)) b.push_back(row.radiosity);
+    for (const ElementsCsvRow& row : readElementsCsv(csvPath).rows) b.push_back(row.radiosity);
     return b;
   });
   SolveOptions solver = header.options;

@@ -59,11 +59,25 @@ int parseIndex(std::string_view text, const char* what, const std::string& file,
   return static_cast<int>(v);
 }
 
+// A 64-bit mask in hexadecimal, 1 to 16 digits without a prefix, as writeElementsCsv writes it.
+uint64_t parseMask(std::string_view text, const std::string& file, int line) {
+  uint64_t mask = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), mask, 16);
+  if (text.empty() || text.size() > 16 || error != std::errc() || end != text.data() + text.size())
+    throw InputError(file, line,
+                     std::string(kBuriedCellsColumn) +
+                         " must be a 64-bit mask in hexadecimal (1 to 16 digits), not '" +
+                         std::string(text) + "'");
+  return mask;
+}
+
 }  // namespace
 
-void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vector<Rgb>& radiosity) {
+void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vector<Rgb>& radiosity,
+                      const std::vector<uint64_t>* buriedCells) {
   const int count = mesh.elementCount();
   RAD_CHECK_EQ(radiosity.size(), count);
+  if (buriedCells) RAD_CHECK_EQ(buriedCells->size(), count);
   // std::to_chars writes the shortest text that reads back as the same double, with no locale or
   // stream state to consult per number: writing the outputs was a large part of a relight's time.
   // Rows are formatted into a buffer and written in blocks.
@@ -77,6 +91,7 @@ void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vecto
     block.push_back(after);
   };
   block += kElementsCsvHeader;
+  if (buriedCells) block += std::string(",") + kBuriedCellsColumn;
   block += '\n';
   for (int e = 0; e < count; ++e) {
     const Eigen::Vector3d c = mesh.centroid(e);
@@ -89,7 +104,16 @@ void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vecto
     field(mesh.area(e), ',');
     for (const double v : {c.x(), c.y(), c.z(), n.x(), n.y(), n.z(), b.r, b.g, b.b, l.r, l.g})
       field(v, ',');
-    field(l.b, '\n');
+    if (buriedCells) {
+      field(l.b, ',');
+      const auto [end, error] =
+          std::to_chars(number, number + sizeof number, (*buriedCells)[e], 16);
+      RAD_CHECK(error == std::errc());
+      block.append(number, end);
+      block.push_back('\n');
+    } else {
+      field(l.b, '\n');
+    }
     if (block.size() >= kBlockBytes) {
       out.write(block.data(), static_cast<std::streamsize>(block.size()));
       block.clear();
@@ -98,7 +122,7 @@ void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vecto
   out.write(block.data(), static_cast<std::streamsize>(block.size()));
 }
 
-std::vector<ElementsCsvRow> readElementsCsv(std::istream& in, const std::string& source) {
+ElementsCsv readElementsCsv(std::istream& in, const std::string& source) {
   // The whole file at once, split into lines here: per-line getline and per-field strings were
   // most of the time a large solution took to read.
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -113,18 +137,24 @@ std::vector<ElementsCsvRow> readElementsCsv(std::istream& in, const std::string&
     return true;
   };
   std::string_view line;
-  if (!next(line) || line != kElementsCsvHeader)
-    throw InputError(
-        source, 1,
-        std::string("not an elements CSV (header missing; expected '") + kElementsCsvHeader + "')");
-  std::vector<ElementsCsvRow> rows;
+  const std::string withBuriedCells = std::string(kElementsCsvHeader) + "," + kBuriedCellsColumn;
+  ElementsCsv csv;
+  if (!next(line) || (line != kElementsCsvHeader && line != withBuriedCells))
+    throw InputError(source, 1,
+                     std::string("not an elements CSV (header missing; expected '") +
+                         kElementsCsvHeader + "', optionally followed by '," + kBuriedCellsColumn +
+                         "')");
+  csv.hasBuriedCells = line == withBuriedCells;
+  const size_t fields = csv.hasBuriedCells ? 17 : 16;
+  std::vector<ElementsCsvRow>& rows = csv.rows;
   rows.reserve(static_cast<size_t>(std::count(text.begin(), text.end(), '\n')));
   for (int lineNumber = 2; next(line); ++lineNumber) {
     if (line.empty()) continue;
     const std::vector<std::string_view> f = splitCsv(line);
-    if (f.size() != 16)
+    if (f.size() != fields)
       throw InputError(source, lineNumber,
-                       "expected 16 comma-separated fields, found " + std::to_string(f.size()));
+                       "expected " + std::to_string(fields) + " comma-separated fields, found " +
+                           std::to_string(f.size()));
     auto number = [&](int k) { return parseNumber(f[k], source, lineNumber); };
     ElementsCsvRow row;
     row.line = lineNumber;
@@ -136,12 +166,13 @@ std::vector<ElementsCsvRow> readElementsCsv(std::istream& in, const std::string&
     row.normal = Eigen::Vector3d(number(7), number(8), number(9));
     row.radiosity = Rgb(number(10), number(11), number(12));
     row.radiance = Rgb(number(13), number(14), number(15));
+    if (csv.hasBuriedCells) row.buriedCells = parseMask(f[16], source, lineNumber);
     rows.push_back(row);
   }
-  return rows;
+  return csv;
 }
 
-std::vector<ElementsCsvRow> readElementsCsv(const std::string& path) {
+ElementsCsv readElementsCsv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path, 0, "cannot open the elements CSV");
   return readElementsCsv(in, path);

@@ -226,7 +226,9 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   auto t = Clock::now();
   const RayCaster rays(mesh, solution.scene);
   report.times.bvh = secondsSince(t);
-  const ElementExposure exposure = solveExposure(options, mesh, rays);
+  auto keptExposure = std::make_shared<const ElementExposure>(solveExposure(options, mesh, rays));
+  const ElementExposure& exposure = *keptExposure;
+  solution.exposure = keptExposure;  // for elements.csv's buried cells, as a solve keeps them
   report.exposureProbeRays = exposure.probeRays();
   solution.problem = makeProblem(solution.scene, mesh, &exposure);
   const double sceneSize = mesh.boundsDiagonal();

@@ -33,6 +33,10 @@ bool solutionIsReusable(const SolveOptions& options);
 std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene& scene,
                                              const SolveOptions& options, std::string& whyNot);
 
+// The elements CSV of `solution` (elements.csv, solution.csv): with the buried cells of its
+// exposure where it kept one, which a reuse then reads instead of casting probe rays again.
+void writeSolutionElementsCsv(std::ostream& out, const Solution& solution);
+
 // Writes solution.csv and solution.json into the temporary files `csv` and `json` (the caller
 // commits them with its other outputs).
 void writeSavedSolution(AtomicFile& csv, AtomicFile& json, const SolveResult& result,

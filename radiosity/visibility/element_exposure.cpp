@@ -7,6 +7,8 @@
 #include <array>
 #include <cmath>
 
+#include "radiosity/core/check.h"
+
 namespace rad {
 namespace {
 
@@ -86,14 +88,30 @@ ElementExposure::ElementExposure(const PatchMesh& mesh, const RayCaster& rays) {
       buried_[e] = cells;
     }
   });
-  for (int e = 0; e < n; ++e) {
-    probeRays_ += cast[e];
+  for (int e = 0; e < n; ++e) probeRays_ += cast[e];
+  summarise(mesh);
+}
+
+ElementExposure::ElementExposure(const PatchMesh& mesh, std::vector<uint64_t> buriedCells)
+    : buried_(std::move(buriedCells)) {
+  RAD_CHECK_EQ(buried_.size(), static_cast<size_t>(mesh.elementCount()));
+  summarise(mesh);
+}
+
+void ElementExposure::summarise(const PatchMesh& mesh) {
+  for (int e = 0; e < static_cast<int>(buried_.size()); ++e) {
     const int count = __builtin_popcountll(buried_[e]);
     partly_ += count > 0 && count < kGrid * kGrid;
     fully_ += count == kGrid * kGrid;
     buriedArea_ += mesh.area(e) * count / (kGrid * kGrid);
   }
   if (partly_ == 0 && fully_ == 0) buried_.clear();  // nothing buried: every query is trivial
+}
+
+std::vector<uint64_t> ElementExposure::allBuriedCells(int elements) const {
+  if (buried_.empty()) return std::vector<uint64_t>(elements, 0);
+  RAD_CHECK_EQ(buried_.size(), static_cast<size_t>(elements));
+  return buried_;
 }
 
 double ElementExposure::exposedFraction(int e) const {

@@ -33,9 +33,13 @@ class ElementExposure {
 
   ElementExposure() = default;  // nothing buried anywhere
   ElementExposure(const PatchMesh& mesh, const RayCaster& rays);
+  // As found before (elements.csv's buried_cells column): one mask per element, no ray cast.
+  ElementExposure(const PatchMesh& mesh, std::vector<uint64_t> buriedCells);
 
   // Bit y·8 + x set: cell x (along s), y (along t) of element e is buried.
   uint64_t buriedCells(int e) const { return buried_.empty() ? 0 : buried_[e]; }
+  // buriedCells(e) for every one of the mesh's `elements`, as elements.csv keeps them.
+  std::vector<uint64_t> allBuriedCells(int elements) const;
   // The exposed share of element e's area, at least kMinFraction.
   double exposedFraction(int e) const;
   bool buried(int e, double s, double t) const;
@@ -49,6 +53,8 @@ class ElementExposure {
   uint64_t probeRays() const { return probeRays_; }
 
  private:
+  void summarise(const PatchMesh& mesh);  // the counts and area from buried_
+
   std::vector<uint64_t> buried_;
   int partly_ = 0, fully_ = 0;
   double buriedArea_ = 0;

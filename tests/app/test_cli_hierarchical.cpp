@@ -22,7 +22,8 @@ double leavingPower(const std::filesystem::path& csv) {
     std::vector<double> row;
     std::stringstream fields(line);
     std::string field;
-    while (std::getline(fields, field, ',')) row.push_back(std::stod(field));
+    // The 16 numeric columns (buried_cells, hexadecimal, follows).
+    while (row.size() < 16 && std::getline(fields, field, ',')) row.push_back(std::stod(field));
     power += row[3] * (row[10] + row[11] + row[12]);
   }
   return power;

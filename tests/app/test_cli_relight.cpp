@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "radiosity/output/elements_csv.h"
 #include "radiosity/output/image_io.h"
 #include "tests/support/run_command.h"
 
@@ -43,18 +44,11 @@ fs::path copyCornell(const fs::path& dir, const std::string& red = "") {
   return dir / "cornell_box.obj";
 }
 
+// L = B/π per element and channel, as elements.csv holds it.
 std::vector<double> radiosityColumn(const fs::path& csv) {
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);  // header
   std::vector<double> values;
-  while (std::getline(in, line)) {
-    std::stringstream fields(line);
-    std::string field;
-    std::vector<std::string> f;
-    while (std::getline(fields, field, ',')) f.push_back(field);
-    for (size_t k = f.size() - 3; k < f.size(); ++k) values.push_back(std::stod(f[k]));
-  }
+  for (const ElementsCsvRow& row : readElementsCsv(csv.string()).rows)
+    values.insert(values.end(), {row.radiance.r, row.radiance.g, row.radiance.b});
   return values;
 }
 

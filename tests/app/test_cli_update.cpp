@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "radiosity/output/elements_csv.h"
 #include "tests/support/run_command.h"
 
 namespace rad {
@@ -55,18 +56,11 @@ fs::path writeCornell(const fs::path& dir, double dx, double dz) {
   return dir / "cornell_box.obj";
 }
 
+// B per element and channel, as elements.csv holds it.
 std::vector<double> radiosityColumn(const fs::path& csv) {
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);  // header
   std::vector<double> values;
-  while (std::getline(in, line)) {
-    std::stringstream fields(line);
-    std::string field;
-    std::vector<std::string> f;
-    while (std::getline(fields, field, ',')) f.push_back(field);
-    for (size_t k = f.size() - 6; k < f.size() - 3; ++k) values.push_back(std::stod(f[k]));
-  }
+  for (const ElementsCsvRow& row : readElementsCsv(csv.string()).rows)
+    values.insert(values.end(), {row.radiosity.r, row.radiosity.g, row.radiosity.b});
   return values;
 }
 

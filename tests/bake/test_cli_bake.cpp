@@ -704,6 +704,52 @@ TEST(CliBake, InterpolatedTexelsWhereNoLightReachesAreDark) {
   fs::remove_all(dir);
 }
 
+// A bake of a saved solution takes the buried cells from elements.csv (no BVH, no probe rays):
+// its lightmap is bit-identical to the one baked from the same file without the column (as
+// written before it was kept), whose cells the bake finds by probe rays. The Cornell box has
+// buried cells (the floor under the blocks), so a wrong or missing mask would show.
+TEST(CliBake, ASavedSolutionsBuriedCellsBakeAsTheProbesFindThem) {
+  const fs::path dir = scratchPath("bake_saved_buried_cells");
+  const std::string scene = kData + "/cornell_box/cornell_box.obj";
+  const std::string options = " --elements 300 --rays 64 -q";
+  auto r = runRadiosity("solve " + scene + " --out " + (dir / "kept").string() + options);
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  // The same solution without the column.
+  fs::create_directories(dir / "older");
+  fs::copy_file(dir / "kept" / "solution.json", dir / "older" / "solution.json");
+  std::ifstream in(dir / "kept" / "elements.csv");
+  std::ofstream older(dir / "older" / "elements.csv");
+  int rows = 0, partlyBuried = 0;
+  for (std::string line; std::getline(in, line); ++rows) {
+    const size_t comma = line.rfind(',');
+    if (rows == 0) {
+      EXPECT_EQ(line.substr(comma + 1), "buried_cells");
+    } else {
+      partlyBuried += line.substr(comma + 1) != "0";
+    }
+    older << line.substr(0, comma) << "\n";
+  }
+  older.close();
+  EXPECT_EQ(rows, 301);
+  EXPECT_GT(partlyBuried, 0);
+  for (const char* from : {"kept", "older"}) {
+    r = runRadiosity("bake " + scene + " --solution " + (dir / from).string() + " --out " +
+                     (dir / (std::string(from) + "_baked")).string() + options +
+                     " --lightmap-size 128");
+    ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+    EXPECT_TRUE(nlohmann::json::parse(
+        readText(dir / (std::string(from) + "_baked") / "bake.json"))["reused_saved_solution"]);
+  }
+  const ImageRgb withCells = readExr((dir / "kept_baked" / "lightmap.exr").string());
+  const ImageRgb probed = readExr((dir / "older_baked" / "lightmap.exr").string());
+  ASSERT_EQ(withCells.pixels.size(), probed.pixels.size());
+  for (size_t t = 0; t < probed.pixels.size(); ++t)
+    for (int c = 0; c < 3; ++c) ASSERT_EQ(withCells.pixels[t][c], probed.pixels[t][c]) << t;
+  EXPECT_EQ(readExrChannel((dir / "kept_baked" / "lightmap.exr").string(), "error"),
+            readExrChannel((dir / "older_baked" / "lightmap.exr").string(), "error"));
+  fs::remove_all(dir);
+}
+
 // The per-texel gather takes as many shadow rays as gather rays unless --light-rays says; that
 // option alone (no gather to weigh it against) is an error.
 TEST(CliBake, LightRaysGoWithTheGather) {

@@ -4,8 +4,9 @@
 // $FINGERPRINT in it becomes the fixed scene's fingerprint, so that inputs get past the
 // fingerprint to the relit entry's overrides and the CSV's rows. The scene: a small room with a
 // lamp material and a sun and a sky. Every error must be an InputError naming solution.json or the
-// CSV; a solution it accepts holds one finite, non-negative B per element of the re-meshed scene
-// and the scene's lights. Findings: crashes, sanitizer reports, and any other exception.
+// CSV; a solution it accepts holds one finite, non-negative B per element of the re-meshed scene,
+// an exposure (from the CSV's buried cells, or probe rays) and the scene's lights. Findings:
+// crashes, sanitizer reports, and any other exception.
 #include <Eigen/Core>
 #include <cstdint>
 #include <cstdio>
@@ -134,5 +135,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   check(s.scene.lights.size() == f.scene.lights.size(), "the lights changed in number");
   check(s.scene.materials.size() == f.scene.materials.size(), "the materials changed in number");
   check(result->report.reusedSavedSolution, "not reported as reused");
+  // The exposure, read from the CSV's buried cells or found by probe rays: a share of each
+  // element's area in (0, 1].
+  check(s.exposure != nullptr, "no exposure");
+  for (int e = 0; e < s.mesh->elementCount(); ++e) {
+    const double fraction = s.exposure->exposedFraction(e);
+    check(fraction > 0 && fraction <= 1, "an exposed fraction outside (0, 1]");
+  }
   return 0;
 }

@@ -373,7 +373,9 @@ TEST(ElementsCsvReader, RoundTripIsBitExact) {
     std::ofstream out(path);
     writeElementsCsv(out, mesh, b);
   }
-  const std::vector<ElementsCsvRow> rows = readElementsCsv(path.string());
+  const ElementsCsv csv = readElementsCsv(path.string());
+  EXPECT_FALSE(csv.hasBuriedCells);
+  const std::vector<ElementsCsvRow>& rows = csv.rows;
   ASSERT_EQ(rows.size(), 4u);
   for (int e = 0; e < 4; ++e) {
     const ElementsCsvRow& row = rows[e];
@@ -390,6 +392,56 @@ TEST(ElementsCsvReader, RoundTripIsBitExact) {
     }
   }
   std::filesystem::remove(path);
+}
+
+// The buried cells column: every mask of 64 bits reads back as written, and the column is
+// there only when the writer is given the masks.
+TEST(ElementsCsvReader, BuriedCellsReadBackAsWritten) {
+  const PatchMesh mesh = foldedPair(3, 5);
+  const std::vector<uint64_t> buried = {0, ~uint64_t{0}, uint64_t{1} << 63, 0x00ff00f0000a0001};
+  std::stringstream file;
+  writeElementsCsv(file, mesh, std::vector<Rgb>(4, Rgb::all(1)), &buried);
+  const std::string text = file.str();
+  EXPECT_EQ(text.substr(0, text.find('\n')), std::string(kElementsCsvHeader) + ",buried_cells");
+  const ElementsCsv csv = readElementsCsv(file, "sol.csv");
+  EXPECT_TRUE(csv.hasBuriedCells);
+  ASSERT_EQ(csv.rows.size(), 4u);
+  for (int e = 0; e < 4; ++e) EXPECT_EQ(csv.rows[e].buriedCells, buried[e]) << e;
+  EXPECT_NE(text.find(",ffffffffffffffff\n"), std::string::npos);  // hexadecimal, 16 digits
+  const std::vector<uint64_t> tooFew(3);
+  EXPECT_THROW(writeElementsCsv(file, mesh, std::vector<Rgb>(4), &tooFew), CheckFailure);
+}
+
+TEST(ElementsCsvReader, BadBuriedCellsNameFileAndLine) {
+  const std::vector<uint64_t> buried = {5, 6};
+  std::ostringstream good;
+  writeElementsCsv(good, unitSquare(), std::vector<Rgb>(2, Rgb::all(1)), &buried);
+  const std::string text = good.str();
+  const std::string header = text.substr(0, text.find('\n') + 1);
+  const std::string row0 =
+      text.substr(header.size(), text.find('\n', header.size()) - header.size());
+  const std::string withoutMask = row0.substr(0, row0.rfind(',') + 1);
+  for (const std::string bad : {"", "0x5", "-1", "g", "1ffffffffffffffff", "5 ", " 5", "+5"}) {
+    std::istringstream in(header + withoutMask + bad + "\n");
+    try {
+      readElementsCsv(in, "sol.csv");
+      ADD_FAILURE() << "no error for '" << bad << "'";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("sol.csv:2: buried_cells must be a 64-bit mask in "
+                                           "hexadecimal (1 to 16 digits), not '" +
+                                           bad + "'"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  // A row without the column under a header with it, and one with it under a header without.
+  std::istringstream shortRow(header + withoutMask.substr(0, withoutMask.size() - 1) + "\n");
+  EXPECT_THROW(readElementsCsv(shortRow, "sol.csv"), InputError);
+  std::istringstream longRow(std::string(kElementsCsvHeader) + "\n" + row0 + "\n");
+  EXPECT_THROW(readElementsCsv(longRow, "sol.csv"), InputError);
+  // Upper-case digits read as well (a hand-edited file).
+  std::istringstream upper(header + withoutMask + "FF\n");
+  EXPECT_EQ(readElementsCsv(upper, "sol.csv").rows[0].buriedCells, 0xffu);
 }
 
 // Bad input: an InputError naming the file and the line.
@@ -437,7 +489,7 @@ TEST(ElementsCsvReader, BadInputNamesFileAndLine) {
   std::string crlf;
   for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
   std::istringstream in(crlf + "\n");
-  EXPECT_EQ(readElementsCsv(in, "sol.csv").size(), 2u);
+  EXPECT_EQ(readElementsCsv(in, "sol.csv").rows.size(), 2u);
 }
 
 // Numbers in decimal notation as strtod reads them (a hand-edited file keeps working): a leading
@@ -464,7 +516,7 @@ TEST(ElementsCsvReader, NumbersReadAsStrtodReadsThem) {
   };
   std::istringstream accepted(row("+2.5", " \t3", "1.0e1") +
                               row("1e-400", "0", "0").substr(header.size()));
-  const std::vector<ElementsCsvRow> rows = readElementsCsv(accepted, "sol.csv");
+  const std::vector<ElementsCsvRow> rows = readElementsCsv(accepted, "sol.csv").rows;
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0].radiosity.r, 2.5);
   EXPECT_EQ(rows[0].radiosity.g, 3.0);

@@ -53,8 +53,10 @@ TEST(TimeLimit, WritesAValidSolutionFlaggedAsNotConverged) {
   while (std::getline(csv, line)) {
     std::stringstream fields(line);
     std::vector<double> v;
-    for (std::string f; std::getline(fields, f, ',');) v.push_back(std::stod(f));
-    ASSERT_EQ(v.size(), 16u) << line;
+    std::vector<std::string> f;
+    for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+    ASSERT_EQ(f.size(), 17u) << line;  // 16 numbers, then the buried cells (hexadecimal)
+    for (size_t k = 0; k < 16; ++k) v.push_back(std::stod(f[k]));
     for (int k = 10; k < 16; ++k) ASSERT_TRUE(std::isfinite(v[k]) && v[k] >= 0) << line;
     maxRed = std::max(maxRed, v[10]);
     ++rows;

@@ -33,7 +33,8 @@ std::vector<std::vector<double>> readCsv(const std::filesystem::path& path) {
     std::vector<double> row;
     std::stringstream s(line);
     std::string field;
-    while (std::getline(s, field, ',')) row.push_back(std::stod(field));
+    // The 16 numeric columns (buried_cells, hexadecimal, follows).
+    while (row.size() < 16 && std::getline(s, field, ',')) row.push_back(std::stod(field));
     rows.push_back(row);
   }
   return rows;
