@@ -173,12 +173,15 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
                             {"rows_cast_again", r.rowsComputed},
                             {"rows_with_other_exposure_or_budget", r.update.rowsOtherChange},
                             {"direct_light_kept", r.update.directLightKept},
+                            {"buried_cells_kept", r.update.buriedCellsKept},
                             {"note",
                              "a kept row of an element that stayed put is reused; the rays of it "
                              "that meet the edited geometry's old or new place before their first "
                              "hit are cast again and their hits exchanged; an element's direct "
                              "light from a light is kept where none of its shadow rays to it can "
-                             "meet the edit (direct_light_kept counts element-light pairs)"}}},
+                             "meet the edit (direct_light_kept counts element-light pairs), and "
+                             "its buried cells where none of its probe rays can "
+                             "(buried_cells_kept counts elements)"}}},
   };
 }
 

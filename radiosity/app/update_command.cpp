@@ -51,11 +51,8 @@ void runUpdate(const UpdateOptions& o) {
   const KeptFactors header = readKeptFactors(keptPath, KeptParts::Header);
   std::future<KeptFactors> reading =
       std::async(std::launch::async, [&keptPath] { return readKeptFactors(keptPath); });
-  std::future<std::vector<Rgb>> readingPrevious = std::async(std::launch::async, [&csvPath] {
-    std::vector<Rgb> b;
-    for (const ElementsCsvRow& row : readElementsCsv(csvPath).rows) b.push_back(row.radiosity);
-    return b;
-  });
+  std::future<ElementsCsv> readingPrevious =
+      std::async(std::launch::async, [&csvPath] { return readElementsCsv(csvPath); });
   SolveOptions solver = header.options;
   solver.solver = parseSolverKind(o.solverName);
   if (o.tolerance) solver.tolerance = *o.tolerance;
@@ -64,14 +61,21 @@ void runUpdate(const UpdateOptions& o) {
   solver.outputDir = o.outputDir.empty() ? o.dir : o.outputDir;
   UpdateStart started = startUpdate(header, keptPath, solver);
   const KeptFactors kept = reading.get();
-  const std::vector<Rgb> previous = readingPrevious.get();
+  const ElementsCsv previousCsv = readingPrevious.get();
+  std::vector<Rgb> previous;
+  std::vector<uint64_t> previousBuried;  // empty in a file written before it kept them
+  for (const ElementsCsvRow& row : previousCsv.rows) {
+    previous.push_back(row.radiosity);
+    if (previousCsv.hasBuriedCells) previousBuried.push_back(row.buriedCells);
+  }
   if (previous.size() != kept.area.size())
     throw InputError(csvPath, 0,
                      std::to_string(previous.size()) + " elements, the kept factors beside it " +
                          std::to_string(kept.area.size()) + ": not the same solve");
   logInfo("read " + keptPath + " (" + std::to_string(kept.rows.size()) + " rows), " + csvPath +
           " and the scene, meshed, in " + formatNumber(secondsSince(t)) + " s");
-  SolveResult result = finishUpdate(std::move(started), kept, keptPath, previous);
+  SolveResult result = finishUpdate(std::move(started), kept, keptPath, previous,
+                                    previousCsv.hasBuriedCells ? &previousBuried : nullptr);
   throwIfInterrupted();
   SolveOptions written = updatedSolutionOptions(kept, result);
   written.outputDir = solver.outputDir;

@@ -44,9 +44,9 @@ bool segmentsMayMeet(const std::array<Eigen::Vector3d, 3>& corners, const Eigen:
          (hi.array() + margin >= box.lo.array()).all();
 }
 
-bool sunBeamMayMeet(const Light& sun, const std::array<Eigen::Vector3d, 3>& corners,
-                    const EditBox& box, double margin) {
-  const Eigen::Vector3d axis = -sun.direction.normalized();
+// Rays from the element along directions at most atan(spread) off `axis`.
+bool beamMayMeet(const std::array<Eigen::Vector3d, 3>& corners, const Eigen::Vector3d& axis,
+                 double spread, const EditBox& box, double margin) {
   const Eigen::Vector3d c = (corners[0] + corners[1] + corners[2]) / 3;
   double r = 0;
   for (const Eigen::Vector3d& p : corners) r = std::max(r, (p - c).norm());
@@ -56,13 +56,18 @@ bool sunBeamMayMeet(const Light& sun, const std::array<Eigen::Vector3d, 3>& corn
   const Eigen::Vector3d v = centre - c;
   const double along = v.dot(axis);
   // Beam points q: along(q) >= -r, and their distance from the axis through c is at most
-  // r + (along(q) + r) tan h, h the disc's half-angle (a ray from within r of c, at most h off
-  // the axis, has gone at most (along(q) + r) / cos h).
+  // r + (along(q) + r) tan h, tan h = spread (a ray from within r of c, at most h off the axis,
+  // has gone at most (along(q) + r) / cos h).
   if (along + R < -r) return false;
-  const double halfAngle = 0.5 * sun.angularDiameterDegrees * M_PI / 180;
-  const double spread = std::tan(halfAngle);  // the diameter is below 90°: h below 45°
   const double lateral = (v - along * axis).norm();
   return lateral - R <= r + (along + R + r) * spread;
+}
+
+bool sunBeamMayMeet(const Light& sun, const std::array<Eigen::Vector3d, 3>& corners,
+                    const EditBox& box, double margin) {
+  const double halfAngle = 0.5 * sun.angularDiameterDegrees * M_PI / 180;
+  // The diameter is below 90°: h below 45°.
+  return beamMayMeet(corners, -sun.direction.normalized(), std::tan(halfAngle), box, margin);
 }
 
 }  // namespace
@@ -82,6 +87,11 @@ bool shadowRaysMayMeet(const Light& light, const std::array<Eigen::Vector3d, 3>&
       return !behindPlane(corners, normal, box, margin);
   }
   return true;
+}
+
+bool raysAlongMayMeet(const std::array<Eigen::Vector3d, 3>& corners,
+                      const Eigen::Vector3d& direction, const EditBox& box, double margin) {
+  return beamMayMeet(corners, direction.normalized(), 0, box, margin);
 }
 
 }  // namespace rad

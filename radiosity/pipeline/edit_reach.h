@@ -26,4 +26,10 @@ struct EditBox {
 bool shadowRaysMayMeet(const Light& light, const std::array<Eigen::Vector3d, 3>& corners,
                        const Eigen::Vector3d& normal, const EditBox& box, double margin);
 
+// Whether some ray from a point of the element along `direction` (ElementExposure's probes) may
+// meet `box`: the rays stay in the element's bounding sphere swept along it. Conservative, as
+// shadowRaysMayMeet.
+bool raysAlongMayMeet(const std::array<Eigen::Vector3d, 3>& corners,
+                      const Eigen::Vector3d& direction, const EditBox& box, double margin);
+
 }  // namespace rad

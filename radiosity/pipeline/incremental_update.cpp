@@ -108,11 +108,42 @@ std::vector<KnownIrradiance> directLightTheEditLeaves(const KeptFactors& kept,
   return known;
 }
 
+// The buried cells of the edited mesh: an element that stayed put keeps the ones it had (`kept`,
+// per kept element) where none of its probe rays can meet the edit's bounds; the others are
+// probed again. `keptCount` counts the elements that kept theirs.
+ElementExposure exposureTheEditLeaves(const SolveOptions& options, const PatchMesh& mesh,
+                                      const RayCaster& rays, const std::vector<int>& match,
+                                      const std::vector<uint64_t>* kept,
+                                      const TriangleSetCaster& region, int& keptCount) {
+  if (!kept || options.formFactors != FormFactorMethod::Hemisphere)
+    return solveExposure(options, mesh, rays);
+  const int n = mesh.elementCount();
+  const double margin = 1e-4 * mesh.boundsDiagonal();  // as the direct light's (above)
+  const EditBox box{region.boundsMin(), region.boundsMax()};
+  std::vector<uint64_t> known(static_cast<size_t>(n), 0);
+  std::vector<char> isKnown(static_cast<size_t>(n), 0);
+  tbb::parallel_for(0, n, [&](int e) {
+    const int old = match[static_cast<size_t>(e)];
+    if (old < 0) return;
+    if (!region.empty()) {
+      const auto corners = mesh.corners(e);
+      for (const Eigen::Vector3d& d : ElementExposure::probeDirections(mesh.normal(e)))
+        if (raysAlongMayMeet(corners, d, box, margin)) return;
+    }
+    known[static_cast<size_t>(e)] = (*kept)[static_cast<size_t>(old)];
+    isKnown[static_cast<size_t>(e)] = 1;
+  });
+  keptCount = static_cast<int>(std::count(isKnown.begin(), isKnown.end(), 1));
+  return ElementExposure(mesh, rays, known, isKnown);
+}
+
 }  // namespace
 
 SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
-                            const std::vector<Rgb>& previous, const SolveOptions& solverOptions) {
-  return finishUpdate(startUpdate(kept, keptPath, solverOptions), kept, keptPath, previous);
+                            const std::vector<Rgb>& previous, const SolveOptions& solverOptions,
+                            const std::vector<uint64_t>* previousBuriedCells) {
+  return finishUpdate(startUpdate(kept, keptPath, solverOptions), kept, keptPath, previous,
+                      previousBuriedCells);
 }
 
 UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
@@ -168,10 +199,12 @@ UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
 }
 
 SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std::string& keptPath,
-                         const std::vector<Rgb>& previous) {
+                         const std::vector<Rgb>& previous,
+                         const std::vector<uint64_t>* previousBuriedCells) {
   const auto start = started.start;
   const SolveOptions& options = started.options;
-  if (previous.size() != kept.area.size())
+  if (previous.size() != kept.area.size() ||
+      (previousBuriedCells && previousBuriedCells->size() != kept.area.size()))
     throw InputError(keptPath, 0,
                      "the previous solution has " + std::to_string(previous.size()) +
                          " elements, the kept factors " + std::to_string(kept.area.size()) +
@@ -226,14 +259,19 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   auto t = Clock::now();
   const RayCaster rays(mesh, solution.scene);
   report.times.bvh = secondsSince(t);
-  auto keptExposure = std::make_shared<const ElementExposure>(solveExposure(options, mesh, rays));
-  const ElementExposure& exposure = *keptExposure;
-  solution.exposure = keptExposure;  // for elements.csv's buried cells, as a solve keeps them
-  report.exposureProbeRays = exposure.probeRays();
-  solution.problem = makeProblem(solution.scene, mesh, &exposure);
   const double sceneSize = mesh.boundsDiagonal();
   const TriangleSetCaster regionCaster(region, rays.centre(), sceneSize),
       oldCaster(oldPlace, rays.centre(), sceneSize);
+  auto keptExposure = std::make_shared<const ElementExposure>(exposureTheEditLeaves(
+      options, mesh, rays, match, previousBuriedCells, regionCaster, update.buriedCellsKept));
+  const ElementExposure& exposure = *keptExposure;
+  solution.exposure = keptExposure;  // for elements.csv's buried cells, as a solve keeps them
+  report.exposureProbeRays = exposure.probeRays();
+  if (previousBuriedCells)
+    logInfo("buried cells: " + std::to_string(update.buriedCellsKept) + " of " + std::to_string(n) +
+            " elements kept from before the edit, " + std::to_string(exposure.probeRays()) +
+            " probe rays");
+  solution.problem = makeProblem(solution.scene, mesh, &exposure);
   // The lights' first shot: an element that stayed put, with the same exposed area, whose shadow
   // rays to a light cannot meet the edit keeps the E_d the kept solve computed.
   const std::vector<KnownIrradiance> knownDirect =

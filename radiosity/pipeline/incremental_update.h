@@ -1,6 +1,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,9 @@ namespace rad {
 // its row's ray budget are unchanged; every other row is cast again. An element that stayed put
 // with the same exposed area keeps its direct light from a light (sun, sky, lamp) where none of
 // its shadow rays to it can meet the region's bounds (edit_reach.h); the others' is cast again.
-// The buried parts are computed again in full (they cost a fraction of the rows). The solve is a
+// An element that stayed put keeps its buried cells (`previousBuriedCells`, per kept element, as
+// the previous elements.csv holds them) where none of its probe rays can meet the region's bounds;
+// the others are probed again, and all of them without `previousBuriedCells`. The solve is a
 // gathering solver's (Gauss–Seidel by default; Jacobi), starting from the previous solution
 // (`previous`, B per kept element; new elements start from their emission). Returns the solution
 // with its kept factors, to be written back for the next update or relight; what the edit changed
@@ -32,7 +35,8 @@ namespace rad {
 // InputError naming `keptPath`: a scene with mirrors or glass (their rows continue past the first
 // hit), a progressive or Southwell solver, `previous` not one value per kept element.
 SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
-                            const std::vector<Rgb>& previous, const SolveOptions& solverOptions);
+                            const std::vector<Rgb>& previous, const SolveOptions& solverOptions,
+                            const std::vector<uint64_t>* previousBuriedCells = nullptr);
 
 // updateKeptSolve in two steps, so that the first runs while factors.bin is still being read:
 // from the kept header alone (readKeptFactors with KeptParts::Header), the scene loaded, checked
@@ -46,7 +50,8 @@ struct UpdateStart {
 UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
                         const SolveOptions& solverOptions);
 SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std::string& keptPath,
-                         const std::vector<Rgb>& previous);
+                         const std::vector<Rgb>& previous,
+                         const std::vector<uint64_t>* previousBuriedCells = nullptr);
 
 // The options the updated solution is saved under (solution.json, so `bake --solution DIR` reuses
 // it): the kept solve's own, with the update's solver and tolerance, when its element-size rule

@@ -108,6 +108,8 @@ struct SolveReport {
                                   // budget changed, or old and new hits tied
     int64_t directLightKept = 0;  // (element, light) pairs whose E_d was kept: no shadow ray of
                                   // theirs can meet the edit
+    int buriedCellsKept = 0;      // elements whose buried cells were kept: no probe ray of theirs
+                                  // can meet the edit
   } update;
   // --solver hierarchical (hierarchical_solve.h): the tree, its links and what they cost.
   struct Hierarchy {

@@ -14,8 +14,9 @@ namespace {
 
 constexpr uint64_t kAllCells = ~uint64_t{0};
 
-// The probe directions in the element's frame: the normal and three 60° off it, 120° apart.
-std::array<Eigen::Vector3d, 4> probeDirections(const Eigen::Vector3d& n) {
+}  // namespace
+
+std::array<Eigen::Vector3d, 4> ElementExposure::probeDirections(const Eigen::Vector3d& n) {
   const Eigen::Vector3d helper =
       std::fabs(n.x()) < 0.6 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
   const Eigen::Vector3d t = n.cross(helper).normalized(), b = n.cross(t);
@@ -27,6 +28,8 @@ std::array<Eigen::Vector3d, 4> probeDirections(const Eigen::Vector3d& n) {
   }
   return d;
 }
+
+namespace {
 
 struct Prober {
   const RayCaster& rays;
@@ -51,8 +54,15 @@ struct Prober {
 
 }  // namespace
 
-ElementExposure::ElementExposure(const PatchMesh& mesh, const RayCaster& rays) {
+ElementExposure::ElementExposure(const PatchMesh& mesh, const RayCaster& rays)
+    : ElementExposure(mesh, rays, {}, {}) {}
+
+ElementExposure::ElementExposure(const PatchMesh& mesh, const RayCaster& rays,
+                                 const std::vector<uint64_t>& known,
+                                 const std::vector<char>& isKnown) {
   const int n = mesh.elementCount();
+  RAD_CHECK(isKnown.empty() ||
+            (isKnown.size() == static_cast<size_t>(n) && known.size() == isKnown.size()));
   buried_.assign(n, 0);
   std::vector<uint64_t> cast(n, 0);
   // A probe's hit needs the normal of what it hit: computed once per element, not per probe (it
@@ -65,6 +75,10 @@ ElementExposure::ElementExposure(const PatchMesh& mesh, const RayCaster& rays) {
   constexpr double kCell = 1.0 / kGrid;
   tbb::parallel_for(tbb::blocked_range<int>(0, n, 16), [&](const tbb::blocked_range<int>& range) {
     for (int e = range.begin(); e < range.end(); ++e) {
+      if (!isKnown.empty() && isKnown[static_cast<size_t>(e)]) {
+        buried_[e] = known[static_cast<size_t>(e)];
+        continue;
+      }
       const auto directions = probeDirections(normals[static_cast<size_t>(e)]);
       const auto corners = mesh.corners(e);
       // The 4×4 blocks, each probed at its centre (a corner shared by its four cells).

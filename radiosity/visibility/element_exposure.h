@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -33,8 +34,15 @@ class ElementExposure {
 
   ElementExposure() = default;  // nothing buried anywhere
   ElementExposure(const PatchMesh& mesh, const RayCaster& rays);
+  // The same, with the elements where isKnown[e] taking known[e] without a probe (update: the
+  // elements whose probe rays cannot meet the edit). Both empty, or one per element.
+  ElementExposure(const PatchMesh& mesh, const RayCaster& rays, const std::vector<uint64_t>& known,
+                  const std::vector<char>& isKnown);
   // As found before (elements.csv's buried_cells column): one mask per element, no ray cast.
   ElementExposure(const PatchMesh& mesh, std::vector<uint64_t> buriedCells);
+
+  // The probe directions of an element with front normal n: n and three 60° off it, 120° apart.
+  static std::array<Eigen::Vector3d, 4> probeDirections(const Eigen::Vector3d& n);
 
   // Bit y·8 + x set: cell x (along s), y (along t) of element e is buried.
   uint64_t buriedCells(int e) const { return buried_.empty() ? 0 : buried_[e]; }

@@ -113,9 +113,21 @@ class IncrementalUpdate : public ::testing::Test {
     if (!before.kept) throw std::runtime_error("the solve kept no factors");
     writeAfter(scene);
     writeAfter(fresh);
-    SolveResult updated =
-        updateKeptSolve(*before.kept, "kept", before.solution.radiosity, optionsFor(scene));
-    return {std::move(before), std::move(updated), runSolve(optionsFor(fresh))};
+    // The buried cells as elements.csv keeps them: the update keeps those the edit cannot change.
+    if (!before.solution.exposure) throw std::runtime_error("the solve kept no exposure");
+    const std::vector<uint64_t> buried =
+        before.solution.exposure->allBuriedCells(before.solution.mesh->elementCount());
+    SolveResult updated = updateKeptSolve(*before.kept, "kept", before.solution.radiosity,
+                                          optionsFor(scene), &buried);
+    SolveResult reference = runSolve(optionsFor(fresh));
+    // Kept or probed again, every element's buried cells are the fresh solve's.
+    const int n = updated.solution.mesh->elementCount();
+    EXPECT_EQ(n, reference.solution.mesh->elementCount());
+    for (int e = 0; e < n && e < reference.solution.mesh->elementCount(); ++e)
+      EXPECT_EQ(updated.solution.exposure->buriedCells(e),
+                reference.solution.exposure->buriedCells(e))
+          << "element " << e;
+    return {std::move(before), std::move(updated), std::move(reference)};
   }
   fs::path dir_;
 };
@@ -156,6 +168,11 @@ TEST_F(IncrementalUpdate, MovedBlockEqualsAFreshSolveAndReusesTheRowsItCannotCha
   // Far fewer rays changed than a recast of the rows would cast.
   EXPECT_LT(u.raysChanged, static_cast<uint64_t>(u.rowsUpdated) * 64 / 4);
   EXPECT_GT(u.rowsOtherChange, 0);  // the floor under the block's old and new footprint
+  // The buried cells: kept where no probe ray can meet the block's old or new place, probed
+  // again around it (the floor under its footprints, which the helper compares with the fresh
+  // solve's).
+  EXPECT_GT(u.buriedCellsKept, 0);
+  EXPECT_LT(u.buriedCellsKept, n - u.moved);
 }
 
 // A courtyard: a 12 m × 12 m floor and a 3 m wall along its back, lit by a sky, and a 0.4 m box
