@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Lightmaps against Cycles' bake, side by side (issue 17, part 2; docs/peer.md, "Lightmaps").
 
-For each scene: `radiosity bake` (the interpolated solution, and per-texel final gathers of several
-ray counts) and Cycles baking the same lightmap on the project's own lightmap UVs
+For each scene: `radiosity bake` (the interpolated solution, per-texel final gathers of several
+ray counts, and per-texel direct light with the solution's indirect light, --light-rays N) and Cycles baking the same lightmap on the project's own lightmap UVs
 (bench/peer/cycles_bake.py, the conventions of cycles_render.py) at several samples per texel,
 interleaved in one run and repeated, as bench/peer/race.py does for camera images. Each lightmap is
 compared with a high-sample Cycles bake made once as two halves with their own seeds and cached: the
@@ -45,22 +45,25 @@ import race
 BAKE_SCRIPT = os.path.join(race.ROOT, "bench/peer/cycles_bake.py")
 
 # Each scene: the race.SCENES entry it bakes, the lightmap's side (one page), the level, the
-# project's per-texel gather rays (0: the interpolated solution), Cycles' samples per texel, and
-# the reference's samples per half.
+# project's per-texel gather rays (0: the interpolated solution), its per-texel shadow rays with
+# the solution's indirect light (`direct`: --gather 0 --light-rays N), Cycles' samples per texel,
+# and the reference's samples per half.
 SCENES = {
     "cornell_box": {"scene": "cornell_box", "lightmap_size": 256, "level": 0.02,
-                    "radiosity": [0, 16, 64, 128, 256, 1024], "cycles": [16, 64, 256, 1024],
-                    "reference_cycles": 4096},
+                    "radiosity": [0, 16, 64, 128, 256, 1024], "direct": [4, 16, 64],
+                    "cycles": [16, 64, 256, 1024], "reference_cycles": 4096},
 }
-QUICK = {"radiosity": [0, 16], "cycles": [4, 16], "reference_cycles": 64}
+QUICK = {"radiosity": [0, 16], "direct": [4], "cycles": [4, 16], "reference_cycles": 64}
 
 
-def project_bake(args, scene, options, gather, seed, directory):
+def project_bake(args, scene, options, gather, seed, directory, light_rays=0):
     """One `radiosity bake` into `directory` (a fresh solve); its wall time."""
     command = [os.path.join(args.build, "bin/radiosity"), "bake", scene["obj"], "--out", directory,
                "--lightmap-size", str(options["lightmap_size"]), "--seed", str(seed), "-q"]
     if gather:
         command += ["--gather", str(gather)]
+    if light_rays:
+        command += ["--light-rays", str(light_rays)]
     return race.run_timed(command + scene["options"], os.path.join(directory + ".log"))
 
 
@@ -147,12 +150,15 @@ def texel_error(lightmap, ref):
 
 def jobs(options):
     return race.interleave([[("cycles", n) for n in options["cycles"]],
-                            [("radiosity", n) for n in options["radiosity"]]])
+                            [("radiosity", n) for n in options["radiosity"]],
+                            [("direct", n) for n in options.get("direct", [])]])
 
 
 def label(method, n):
     if method == "cycles":
         return "Cycles bake"
+    if method == "direct":
+        return f"radiosity bake --light-rays {n}"
     return "radiosity bake" + (f" --gather {n}" if n else " (interpolated)")
 
 
@@ -174,7 +180,9 @@ def race_scene(args, name, options, work):
                 lightmap = np.load(os.path.join(work, "cycles.npy"))[..., :3].astype(np.float64)
             else:
                 directory = tempfile.mkdtemp(dir=work)
-                seconds = project_bake(args, scene, options, n, seed, directory)
+                seconds = (project_bake(args, scene, options, 0, seed, directory, light_rays=n)
+                           if method == "direct" else
+                           project_bake(args, scene, options, n, seed, directory))
                 if layout_of(directory) != expected:
                     sys.exit(f"bake_race: {name}: the bake in {directory} has another lightmap "
                              "layout than the one Cycles baked on")
@@ -219,12 +227,13 @@ def plot(name, options, rows, path):
                                        ("error_interior", "interior texels (not at a chart border)"))):
         for lab, marker, colour in (("Cycles bake", "o-", "#e67e22"),
                                     ("radiosity bake --gather", "s-", "#c0392b"),
+                                    ("radiosity bake --light-rays", "v-", "#8e44ad"),
                                     ("radiosity bake (interpolated)", "D", "#16a085")):
             line = sorted((r for r in rows if r["label"].startswith(lab)), key=lambda r: r["seconds"])
             if not line:
                 continue
             race.plot_line(ax, line, key, "samples", marker, colour,
-                           lab + (" N" if lab.endswith("gather") else ""))
+                           lab + (" N" if lab.endswith(("gather", "rays")) else ""))
         race.style_error_axes(ax, options["level"],
                               "plain relative RMSE of the texels, reference noise removed",
                               f"{name} lightmap ({options['lightmap_size']}²): {title}")
@@ -241,7 +250,9 @@ def summarise(name, options, rows, out):
     plot(name, options, summary, os.path.join(out, f"bake_{name}.png"))
     times = {}
     groups = {"Cycles bake": [r for r in summary if r["label"] == "Cycles bake"],
-              "radiosity bake --gather N": [r for r in summary if "--gather" in r["label"]]}
+              "radiosity bake --gather N": [r for r in summary if "--gather" in r["label"]],
+              "radiosity bake --light-rays N": [r for r in summary
+                                                if "--light-rays" in r["label"]]}
     for lab, group in groups.items():
         if group:
             seconds, how = race.time_to_level(group, options["level"])

@@ -2,7 +2,8 @@
 """The project against Blender's Cycles, side by side (issue 17, docs/peer.md).
 
 For each scene: Cycles (bench/peer/cycles_render.py, the project's conventions) and the project's
-`radiosity render` (--method radiosity at two gather settings, --method path) at several samples
+`radiosity render` (--method radiosity at several gather settings, and --gather 0 --light-rays N:
+the direct light per pixel, the indirect light the solution's; --method path) at several samples
 per pixel, interleaved in one run (Cycles, radiosity, path, Cycles, ...) and repeated, so that
 every tool runs under the same load of this shared machine. Each image is compared with
 
@@ -58,21 +59,24 @@ SCENES = {
         "options": [], "level": 0.02,
         "cycles": [16, 64, 256, 1024], "path": [16, 64, 256],
         "radiosity": [(1, 0, 16), (1, 0, 64), (1, 0, 256), (4, 2, 16), (4, 2, 64), (4, 2, 256)],
-        "adaptive": [(1, 0, 16), (1, 0, 64), (1, 0, 256)],
+        "adaptive": [(1, 0, 16), (1, 0, 64), (1, 0, 256), (0, 1, 16), (0, 1, 32), (0, 1, 64),
+                     (0, 1, 256)],
         "reference_cycles": 2048, "reference_path": 1024},
     "mirror_glass": {
         "obj": os.path.join(ROOT, "data/cornell_box/cornell_box_mirror_glass.obj"),
         "camera": os.path.join(ROOT, "data/cornell_box/cornell_box.camera.json"),
         "options": [], "level": 0.05,
         "cycles": [16, 64, 256, 1024], "path": [16, 64, 256],
-        "radiosity": [(1, 0, 16), (1, 0, 64), (1, 0, 256), (4, 2, 16), (4, 2, 64)],
+        "radiosity": [(1, 0, 16), (1, 0, 64), (1, 0, 256), (4, 2, 16), (4, 2, 64), (0, 1, 16),
+                      (0, 1, 64)],
         "reference_cycles": 2048, "reference_path": 1024},
     "staircase": {
         "obj": os.path.join(SHARED, "staircase2/staircase2.obj"),
         "camera": os.path.join(SHARED, "staircase2/staircase2.camera.json"),
         "options": ["--two-sided"], "level": 0.05,
         "cycles": [16, 64, 256, 1024], "path": [16, 64, 256],
-        "radiosity": [(1, 0, 16), (1, 0, 64), (1, 0, 256), (4, 2, 16), (4, 2, 64)],
+        "radiosity": [(1, 0, 16), (1, 0, 64), (1, 0, 256), (4, 2, 16), (4, 2, 64), (0, 4, 16),
+                      (0, 4, 64), (0, 4, 256)],
         "reference_cycles": 1024, "reference_path": 512},
     "atrium": {
         "obj": os.path.join(SHARED, "sponza-dabrovic/sponza.obj"),
@@ -255,7 +259,7 @@ def plot(name, scene, rows, path):
     fig, axes = plt.subplots(1, 2, figsize=(14, 5.4))
     styles = {"Cycles": ("o-", "#e67e22"), method_label("path", 0, 0): ("^-", "#2c3e50")}
     gathers = sorted({r["label"] for r in rows if "radiosity --" in r["label"]})
-    for label, colour in zip(gathers, ["#c0392b", "#8e44ad", "#16a085", "#2980b9"]):
+    for label, colour in zip(gathers, ["#c0392b", "#8e44ad", "#16a085", "#2980b9", "#d35400"]):
         styles[label] = ("s-", colour)
     for ax, (key, title) in zip(axes, (("error", "against a Cycles reference"),
                                        ("error_vs_path", "against the project's path tracer"))):

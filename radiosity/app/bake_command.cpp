@@ -213,9 +213,7 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   finishSolveOptions(command, o.solve, o.solverName);
   if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
   checkDirectionalOptions(command, o);
-  if (o.lightRays > 0 && o.gather == 0)
-    throw InputError("--light-rays is for the per-texel gather: give --gather N too");
-  if (o.solve.lightGroups && o.gather > 0)
+  if (o.solve.lightGroups && (o.gather > 0 || o.lightRays > 0))
     throw InputError(
         "--gather with --light-groups: the per-texel gather samples every light at once, so it "
         "cannot split its direct light into the groups; bake the layers without --gather (or "
@@ -318,7 +316,9 @@ void runBake(const CLI::App& command, BakeOptions& o) {
     std::unique_ptr<const FinalGather> gather;
     std::vector<std::vector<Rgb>> gatherError;  // per page and texel: the gather's standard error
     const bool textured = irradiance || !solution.scene.textures.empty();
-    if (o.gather > 0) {
+    // --gather N, or --gather 0 --light-rays N: the direct light per texel, the indirect part
+    // the solution's (final_gather.h).
+    if (o.gather > 0 || o.lightRays > 0) {
       view = std::make_unique<const RenderScene>(solution.scene, mesh, rays());
       gather = std::make_unique<const FinalGather>(*view, solution.radiosity,
                                                    FinalGatherOptions{o.gather, o.lightRays});
@@ -394,6 +394,9 @@ void runBake(const CLI::App& command, BakeOptions& o) {
       const std::string includes =
           o.gather > 0
               ? "the per-texel gather's Monte Carlo standard error (shadow and gather rays)"
+          : o.lightRays > 0
+              ? "the per-texel direct light's Monte Carlo standard error (shadow rays; the "
+                "indirect part is the solution's, interpolated)"
               : "the mesh's displayed error (the interpolated values against the "
                 "solution, the refinement's estimate)";
       logInfo("lightmap confidence: " + describeConfidence(c) + "; " + includes);
@@ -438,28 +441,27 @@ void runBake(const CLI::App& command, BakeOptions& o) {
             std::to_string(layout.rects.size()) + " charts on " + std::to_string(layout.pages) +
             " page(s) of " + std::to_string(layout.width) + "×" + std::to_string(layout.height) +
             " texels of " + formatNumber(layout.texelSize) + " scene units (" + layoutRule + ")");
-    summary["lightmap"] = {
-        {"uvs", o.sceneUvs ? "scene" : "generated"},
-        {"charts", layout.rects.size()},
-        {"pages", layout.pages},
-        {"width", layout.width},
-        {"height", layout.height},
-        {"texel_size", layout.texelSize},
-        {"texel_density", 1 / layout.texelSize},
-        {"size_rule", layoutRule},
-        {"padding", layout.padding},
-        {"dilation", o.dilation},
-        {"texels_covered", count(TexelState::Covered)},
-        {"texels_conservative", count(TexelState::Conservative)},
-        {"texels_dilated", count(TexelState::Dilated)},
-        {"texels_empty", count(TexelState::Empty)},
-        {"texels_next_to_two_charts", crowded},
-        {"chart_seconds", chartSeconds},
-        {"gather_rays", o.gather},
-        {"light_rays", o.gather > 0 ? (o.lightRays > 0 ? o.lightRays : o.gather) : 0},
-        {"bake_seconds", since(t)},
-        {"content", lightmapContentName(o.content)},
-        {"unit", lightmapContentMeaning(o.content)}};
+    summary["lightmap"] = {{"uvs", o.sceneUvs ? "scene" : "generated"},
+                           {"charts", layout.rects.size()},
+                           {"pages", layout.pages},
+                           {"width", layout.width},
+                           {"height", layout.height},
+                           {"texel_size", layout.texelSize},
+                           {"texel_density", 1 / layout.texelSize},
+                           {"size_rule", layoutRule},
+                           {"padding", layout.padding},
+                           {"dilation", o.dilation},
+                           {"texels_covered", count(TexelState::Covered)},
+                           {"texels_conservative", count(TexelState::Conservative)},
+                           {"texels_dilated", count(TexelState::Dilated)},
+                           {"texels_empty", count(TexelState::Empty)},
+                           {"texels_next_to_two_charts", crowded},
+                           {"chart_seconds", chartSeconds},
+                           {"gather_rays", o.gather},
+                           {"light_rays", o.lightRays > 0 ? o.lightRays : o.gather},
+                           {"bake_seconds", since(t)},
+                           {"content", lightmapContentName(o.content)},
+                           {"unit", lightmapContentMeaning(o.content)}};
     if (o.directional) {
       // L1 SH of the incident radiance per texel, beside the lightmap
       // (render/directional_lightmap).
@@ -654,7 +656,9 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
       ->check(CLI::NonNegativeNumber);
   bake->add_option("--light-rays", o->lightRays,
                    "Shadow rays to the emitters per texel of the --gather, MIS-weighted against "
-                   "the gather rays by their counts; 0: as many as --gather")
+                   "the gather rays by their counts; 0: as many as --gather; with --gather 0: "
+                   "the direct light per texel by these rays alone, the indirect light "
+                   "interpolated from the solution")
       ->default_val(0)
       ->check(CLI::NonNegativeNumber);
   auto* angle = bake->add_option("--chart-angle", o->chartAngle,

@@ -178,7 +178,9 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
       MethodInputs{renderScene, view.radiosity, o.gather, &camera,
                    o.mis == "balance" ? MisHeuristic::Balance : MisHeuristic::Power, o.lightRays});
   if (radiosity && o.gather == 0)
-    skip("final gather", "--gather 0: interpolated radiosity preview");
+    skip("final gather", o.lightRays > 0
+                             ? "--gather 0 --light-rays N: the indirect light is the solution's"
+                             : "--gather 0: interpolated radiosity preview");
   if (o.method == "bdpt" && camera.lensRadius > 0)
     skip("light tracing (t = 1)", "it needs a pinhole camera (lens radius 0)");
   RenderSettings settings;
@@ -287,7 +289,7 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
       {"samples_per_pixel", spp},
       {"adaptive", adaptiveReport(render, spp, settings.adaptive)},
       {"gather_rays", radiosity ? o.gather : 0},
-      {"light_rays", radiosity && o.gather > 0 ? (o.lightRays > 0 ? o.lightRays : o.gather) : 0},
+      {"light_rays", radiosity ? (o.lightRays > 0 ? o.lightRays : o.gather) : 0},
       {"seed", o.solve.seed},
       {"threads", threads},
       {"rays",
@@ -379,12 +381,14 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
       ->default_val(o->mis);
   cmd->add_option(
          "--gather", o->gather,
-         "Final-gather rays (and shadow rays) per diffuse eye hit; 0: interpolated preview")
+         "Final-gather rays (and shadow rays) per diffuse eye hit; 0: interpolated preview, or "
+         "with --light-rays N, direct light by N shadow rays and the solution's indirect light")
       ->default_val(o->gather);
   cmd->add_option(
          "--light-rays", o->lightRays,
          "Shadow rays to the emitters per diffuse eye hit of the final gather, MIS-weighted "
-         "against the --gather rays by their counts; 0: as many as --gather")
+         "against the --gather rays by their counts; 0: as many as --gather; with --gather 0: "
+         "the direct light by these rays alone, the indirect light interpolated from the solution")
       ->default_val(o->lightRays);
   cmd->add_option("--spp", o->spp, "Samples per pixel (default: the method's, see --method)")
       ->check(CLI::PositiveNumber);

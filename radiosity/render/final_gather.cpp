@@ -8,6 +8,7 @@
 #include <string>
 
 #include "radiosity/core/rng.h"
+#include "radiosity/pipeline/emitter_first_shot.h"
 #include "radiosity/render/scattering.h"
 #include "radiosity/render/sobol_sampler.h"
 #include "radiosity/scene/surface_textures.h"
@@ -26,6 +27,18 @@ Rgb varianceOfMean(const Rgb& sum, const Rgb& squares, int n) {
     v[c] = n > 1 ? std::max(0.0, spread) / (double(n) * (n - 1)) : squares[c];
   }
   return v;
+}
+
+// Shadow rays per element for its mean direct light (indirectFromSolution): the solve's own
+// first shot takes half its 1024 default links' rays (solve_pipeline.cpp); the mean's noise
+// enters the indirect part, so about as many.
+constexpr int kMeanDirectRays = 512;
+
+// An interpolated indirect part may dip below 0 where noise put an element's below its direct
+// share; the light reflected at a point never does.
+Rgb nonNegative(Rgb light) {
+  for (int c = 0; c < 3; ++c) light[c] = std::max(0.0, light[c]);
+  return light;
 }
 
 std::vector<double> exposedAreas(const PatchMesh& mesh, const ElementExposure& exposure) {
@@ -59,6 +72,22 @@ FinalGather::FinalGather(const RenderScene& scene, const std::vector<Rgb>& radio
     reflected_[e] = (b - emitted) / M_PI;
     for (int c = 0; c < 3; ++c) reflected_[e][c] = std::max(0.0, reflected_[e][c]);
     perElement[e] = {radiance_[e].r, radiance_[e].g, radiance_[e].b};
+  }
+  if (indirectFromSolution()) {
+    // The solution's reflected light less its direct part (the emitters' and the scene lights'
+    // means over the element, as the hits' shadow rays estimate them), per unit reflectance.
+    const std::vector<Rgb> direct = meanDirectLight();
+    for (int e = 0; e < n; ++e) {
+      // Not clamped at 0: where noise puts the solution's reflected light below its mean direct
+      // part, the hits' own direct light makes up for it on average over the element.
+      const Rgb indirect = reflected_[e] - rho_[e] * direct[e];
+      Rgb h;
+      for (int c = 0; c < 3; ++c)
+        if (rho_[e][c] > 0) h[c] = indirect[c] / rho_[e][c];
+      perElement[e] = {h.r, h.g, h.b};
+    }
+    vertexIndirect_ = interpolation_.interpolate(perElement);
+    return;
   }
   if (options_.gatherRays == 0) {
     vertexRadiance_ = interpolation_.interpolate(perElement);
@@ -122,10 +151,82 @@ FinalGather::ElementLight FinalGather::meanLightSample() const {
   return light;
 }
 
+std::vector<Rgb> FinalGather::meanDirectLight() const {
+  const PatchMesh& mesh = scene_.mesh();
+  const int n = mesh.elementCount();
+  std::vector<Rgb> direct = meanSceneLight();
+  // The emitters' by the solve's own estimator of their first shot (emitter_first_shot.h), every
+  // emitter shot, however large: bounded beside an emitter, where a shadow ray's E·cos·cos/r²
+  // has no bound.
+  RadiosityProblem problem;
+  problem.emission.resize(n);
+  problem.reflectance = rho_;
+  problem.area.resize(n);
+  for (int e = 0; e < n; ++e) {
+    problem.emission[e] = M_PI * emitted_[e];
+    problem.area[e] = mesh.area(e);
+  }
+  EmitterFirstShot shot(mesh, scene_.caster(), exposure_, 0x6469726563740000ull, kMeanDirectRays,
+                        /*largeEmitterShare=*/1.0);
+  shot.apply(problem);
+  if (shot.active())
+    for (int e = 0; e < n; ++e) direct[e] += shot.irradiance()[e] / M_PI;
+  return direct;
+}
+
+std::vector<Rgb> FinalGather::meanSceneLight() const {
+  // Fewer points than meanLightSample's: the sun and sky vary slowly over an element but for
+  // shadows, and a sky costs a ray per point per light.
+  constexpr int kPoints = 64;
+  const PatchMesh& mesh = scene_.mesh();
+  const int n = mesh.elementCount();
+  std::vector<Rgb> mean(n);
+  const SceneLights& lights = scene_.lights();
+  if (lights.empty()) return mean;
+  tbb::parallel_for(tbb::blocked_range<int>(0, n), [&](const tbb::blocked_range<int>& range) {
+    RayCounts unused;
+    for (int e = range.begin(); e < range.end(); ++e) {
+      const Material& m = scene_.material(e);
+      if (m.isSpecular() || rho_[e].maxComponent() == 0) continue;
+      const auto c = mesh.corners(e);
+      SurfaceHit hit;
+      hit.element = e;
+      hit.normal = mesh.normal(e);
+      hit.front = true;
+      hit.material = &m;
+      Rgb sum;
+      int exposed = 0;
+      for (int k = 0; k < kPoints; ++k) {
+        const Point2 p = SobolSampler::point(k, streamKey(0x4c494748, e, 1));
+        if (exposure_.buried(e, p.x, p.y)) continue;
+        ++exposed;
+        const double r = std::sqrt(p.x);
+        hit.position = (1 - r) * c[0] + r * (1 - p.y) * c[1] + r * p.y * c[2];
+        sum += lights.deltaIrradiance(scene_, hit, unused);
+        for (int a = 0; a < lights.areaCount(); ++a)
+          sum += lights.sampleArea(
+              a, scene_, hit, SobolSampler::point(k, streamKey(0x4c494748, e, 2 + a)), unused, 0.0);
+      }
+      mean[e] = exposed > 0 ? sum / (exposed * M_PI) : Rgb();
+    }
+  });
+  return mean;
+}
+
 std::string FinalGather::name() const {
+  if (indirectFromSolution())
+    return "radiosity (direct by " + std::to_string(options_.lightRays) +
+           " shadow rays, indirect from the solution)";
   return options_.gatherRays == 0
              ? "radiosity (interpolated, no gather)"
              : "radiosity (final gather, " + std::to_string(options_.gatherRays) + " rays)";
+}
+
+Rgb FinalGather::interpolatedIndirect(int element, double u, double v) const {
+  const auto& t = interpolation_.triangle(element);
+  const Eigen::Vector3d h =
+      (1 - u - v) * vertexIndirect_[t[0]] + u * vertexIndirect_[t[1]] + v * vertexIndirect_[t[2]];
+  return {h.x(), h.y(), h.z()};
 }
 
 Rgb FinalGather::interpolatedRadiance(const SurfaceHit& hit) const {
@@ -188,7 +289,8 @@ Rgb FinalGather::directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts&
   sampler.get2DArray(n, points);
   spreadOrigins(hit, footprint, sampler, n, origins);
   Rgb sum, squares;
-  const double gathersPerLight = double(options_.gatherRays) / n;
+  // indirectFromSolution: as many cosine rays as shadow rays, which only look for the lights.
+  const double gathersPerLight = indirectFromSolution() ? 1.0 : double(options_.gatherRays) / n;
   for (int k = 0; k < n; ++k) {
     if (!origins.empty()) at.position = origins[k];
     const Rgb v = lightSample(at, points[k], counts, gathersPerLight);
@@ -242,20 +344,33 @@ Rgb FinalGather::gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts&
   thread_local std::vector<Point2> points;
   thread_local std::vector<Eigen::Vector3d> origins;
   SurfaceHit at = hit;
-  const int n = options_.gatherRays;
+  const int n = indirectFromSolution() ? lightRays() : options_.gatherRays;
   sampler.get2DArray(n, points);
   spreadOrigins(hit, footprint, sampler, n, origins);
   Rgb sum, squares;
   for (int k = 0; k < n; ++k) {
     if (!origins.empty()) at.position = origins[k];
     const Eigen::Vector3d d = cosineDirection(hit.normal, points[k].x, points[k].y);
-    const Rgb v = secondaryRadiance(at, d, sampler.rng(), counts, true);
+    const Rgb v = indirectFromSolution() ? lightAlong(at, d, counts)
+                                         : secondaryRadiance(at, d, sampler.rng(), counts, true);
     sum += v;
     if (variance) squares += v * v;
   }
   if (variance) *variance += varianceOfMean(sum, squares, n);
   return sum /
          n;  // cosine-weighted mean of incoming radiance: times ρ it is the reflected radiance
+}
+
+Rgb FinalGather::lightAlong(const SurfaceHit& from, const Eigen::Vector3d& direction,
+                            RayCounts& counts) const {
+  const SurfaceHit hit = scene_.intersect(scene_.spawn(from, direction), direction);
+  ++counts.closest;
+  if (!hit.hit()) return scene_.lights().escapedRadiance(direction, from.normal, 1.0);
+  if (hit.material->isSpecular() || !hit.front || !hit.material->isEmitter()) return {};
+  const double cosY = -hit.normal.dot(direction);
+  const double lightPdf =
+      scene_.emitters().pdfArea(hit.element) * hit.distance * hit.distance / cosY;
+  return hit.material->emission * misWeight(from.normal.dot(direction) / M_PI, lightPdf);
 }
 
 Rgb FinalGather::secondaryRadiance(const SurfaceHit& from, Eigen::Vector3d direction, Rng& rng,
@@ -369,6 +484,17 @@ Rgb FinalGather::outgoingRadiance(int element, const TexelFootprint& footprint, 
   Rgb variance;
   // The gather rays draw from the rng first, then the shadow rays: the order GCC gave the
   // unsequenced sum `directLight(…) + gatherLight(…)` this was before, so bakes stay bit for bit.
+  if (indirectFromSolution()) {
+    const Rgb direct = directLight(hit, sampler, counts, &variance, &footprint) +
+                       gatherLight(hit, sampler, counts, &variance, &footprint);
+    for (int k = 0; k < 3; ++k) standardError[k] = hit.diffuse[k] * std::sqrt(variance[k]);
+    // A buried point (under a box resting on the floor) takes no interpolated light from the
+    // exposed part beside it, as the interpolated bake leaves it dark.
+    const Rgb indirect = exposure_.buriedAtBarycentric(element, hit.u, hit.v)
+                             ? Rgb()
+                             : interpolatedIndirect(element, hit.u, hit.v);
+    return m.emission + hit.diffuse * nonNegative(direct + indirect);
+  }
   const Rgb gathered = gatherLight(hit, sampler, counts, &variance, &footprint);
   const Rgb direct = directLight(hit, sampler, counts, &variance, &footprint);
   for (int k = 0; k < 3; ++k) standardError[k] = hit.diffuse[k] * std::sqrt(variance[k]);
@@ -400,13 +526,18 @@ Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vecto
       continue;
     }
     if (!hit.front) return {};
-    if (options_.gatherRays == 0) return weight * interpolatedRadiance(hit);
+    if (options_.gatherRays == 0 && !indirectFromSolution())
+      return weight * interpolatedRadiance(hit);
     if (hit.diffuse.maxComponent() == 0) {
       // Nothing to reflect (a black emitter, say): its radiance is Ke, no gather needed.
       ++counts.gathersSkipped;
       return weight * m.emission;
     }
-    const Rgb reflected = directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts);
+    const Rgb reflected =
+        indirectFromSolution()
+            ? nonNegative(directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts) +
+                          interpolatedIndirect(hit.element, hit.u, hit.v))
+            : directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts);
     return weight * (m.emission + hit.diffuse * reflected);
   }
 }

@@ -10,7 +10,9 @@
 namespace rad {
 
 struct FinalGatherOptions {
-  // 0: show the interpolated radiosity B/π at the first diffuse hit (preview). N > 0: direct
+  // 0: show the interpolated radiosity B/π at the first diffuse hit (preview), or with lightRays
+  // > 0, the direct light by lightRays shadow rays at the hit plus the solution's indirect part
+  // interpolated there (indirectFromSolution below). N > 0: direct
   // light by N shadow rays to the emitters plus N cosine-weighted gather rays into the
   // solution's reflected part (B − E)/π; the two share the direct light by multiple importance
   // sampling (a gather ray that reaches an emitter adds its MIS-weighted Ke). A gather ray that
@@ -18,10 +20,10 @@ struct FinalGatherOptions {
   // contact) gathers once more from that point (one shadow and one cosine ray, MIS-weighted in
   // the same way) instead of taking the element's value.
   int gatherRays = 64;
-  // Shadow rays per diffuse eye hit; 0: as many as gatherRays. Fewer than gatherRays pays where
-  // the gather's indirect part, not the direct light, holds most of the variance (the Cornell
-  // box: docs/benchmarks.md, "Error against time"); the MIS weights count the rays of each kind
-  // (power heuristic with n·pdf), so any count stays unbiased.
+  // Shadow rays per diffuse eye hit; 0: as many as gatherRays (with gatherRays 0: the preview).
+  // Fewer than gatherRays pays where the gather's indirect part, not the direct light, holds most
+  // of the variance (the Cornell box: docs/benchmarks.md, "Error against time"); the MIS weights
+  // count the rays of each kind (power heuristic with n·pdf), so any count stays unbiased.
   int lightRays = 0;
 };
 
@@ -68,7 +70,22 @@ class FinalGather : public Integrator {
                        RayCounts& counts, Rgb& standardError) const;
 
  private:
+  // gatherRays 0 with shadow rays: the direct light at each hit by its own shadow rays (a shadow's
+  // edge, a light's fall-off, exact however coarse the mesh), the interreflected light from the
+  // solution, interpolated: no gather ray, so no gather noise; the indirect part's discretisation
+  // is the bias, small where the indirect light varies slowly (docs/rendering.md).
+  bool indirectFromSolution() const { return options_.gatherRays == 0 && options_.lightRays > 0; }
   Rgb interpolatedRadiance(const SurfaceHit& hit) const;  // B/π at the hit, from vertex values
+  // The solution's indirect incident light H_i/π at barycentrics (u, v) of `element`, from
+  // vertexIndirect_.
+  Rgb interpolatedIndirect(int element, double u, double v) const;
+  // Per element: the mean over its exposed points of the direct irradiance / π, from the
+  // emitters and the scene lights; the latter's part alone (sun, sky, lamps).
+  std::vector<Rgb> meanDirectLight() const;
+  std::vector<Rgb> meanSceneLight() const;
+  // indirectFromSolution: what a cosine-sampled ray from `from` finds of the lights straight
+  // ahead (an emitter, the sky), MIS-weighted against one shadow ray per cosine ray.
+  Rgb lightAlong(const SurfaceHit& from, const Eigen::Vector3d& direction, RayCounts& counts) const;
   // `variance`, when given, gains the variance of each estimate's mean (s²/n per channel).
   // `footprint`, when given, spreads the samples' origins over it (see outgoingRadiance).
   Rgb directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
@@ -124,6 +141,9 @@ class FinalGather : public Integrator {
   ElementExposure exposure_;
   VertexInterpolation interpolation_;
   std::vector<Eigen::Vector3d> vertexRadiance_;  // B/π per output vertex (gather 0)
+  // indirectFromSolution: per output vertex, the solution's reflected light less its direct
+  // part, divided by ρ: the albedo-free indirect light H_i/π that the point's ρ multiplies.
+  std::vector<Eigen::Vector3d> vertexIndirect_;
 };
 
 }  // namespace rad

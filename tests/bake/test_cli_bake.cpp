@@ -751,16 +751,16 @@ TEST(CliBake, ASavedSolutionsBuriedCellsBakeAsTheProbesFindThem) {
 }
 
 // The per-texel gather takes as many shadow rays as gather rays unless --light-rays says; that
-// option alone (no gather to weigh it against) is an error.
-TEST(CliBake, LightRaysGoWithTheGather) {
+// option alone is the direct light per texel by those rays, the indirect part the solution's.
+TEST(CliBake, LightRaysGoWithTheGatherOrTakeTheDirectLightAlone) {
   const fs::path dir = scratchPath("bake_light_rays");
   const std::string bake = "bake " + kData + "/tests/furnace_box.obj --out " + dir.string() +
                            " --elements 50 --rays 16 --lightmap-size 32 --quiet ";
   auto r = runRadiosity(bake + "--light-rays 4");
-  EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.stderrText.find("--light-rays is for the per-texel gather"), std::string::npos)
-      << r.stderrText;
-  EXPECT_FALSE(fs::exists(dir / "bake.json"));
+  ASSERT_EQ(r.exitCode, 0) << r.stderrText;
+  const nlohmann::json alone = nlohmann::json::parse(readText(dir / "bake.json"));
+  EXPECT_EQ(alone["lightmap"]["light_rays"], 4);
+  EXPECT_EQ(alone["lightmap"]["gather_rays"], 0);
   r = runRadiosity(bake + "--gather 8");
   ASSERT_EQ(r.exitCode, 0) << r.stderrText;
   EXPECT_EQ(nlohmann::json::parse(readText(dir / "bake.json"))["lightmap"]["light_rays"], 8);
@@ -774,9 +774,12 @@ TEST(CliBakeLightGroups, RefusesTheGatherAndRefinementAndWritesNothing) {
   const fs::path dir = scratchPath("bake_groups_bad");
   const std::string bake = "bake " + kData + "/cornell_box/cornell_box.obj --out " + dir.string() +
                            " --light-groups --elements 100 ";
+  for (const char* perTexel : {"--gather 4", "--light-rays 4"}) {
+    const auto r = runRadiosity(bake + perTexel);
+    EXPECT_EQ(r.exitCode, 1) << perTexel;
+    EXPECT_NE(r.stderrText.find("--gather with --light-groups"), std::string::npos) << r.stderrText;
+  }
   auto r = runRadiosity(bake + "--gather 4");
-  EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.stderrText.find("--gather with --light-groups"), std::string::npos) << r.stderrText;
   r = runRadiosity(bake + "--form-factors analytic --refine-threshold 0.1");
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.stderrText.find("--light-groups with adaptive refinement"), std::string::npos)

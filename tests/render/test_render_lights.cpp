@@ -427,6 +427,10 @@ TEST(RenderLights, PathTracerBdptAndFinalGatherAgreeOnALitBox) {
       meanOver(FinalGather(*w->view, w->solved.solution.radiosity, FinalGatherOptions{16}), 64);
   const Estimate preview =
       meanOver(FinalGather(*w->view, w->solved.solution.radiosity, FinalGatherOptions{0}), 2);
+  // The direct light at the hit, the solution's indirect part interpolated: the sun, sky and lamp
+  // each counted once (their mean share taken out of the solution's B).
+  const Estimate hybrid =
+      meanOver(FinalGather(*w->view, w->solved.solution.radiosity, FinalGatherOptions{0, 4}), 64);
   for (int c = 0; c < 3; ++c) {
     const double noise = std::hypot(path.sigma[c], bdpt.sigma[c]);
     ASSERT_GT(noise, 0);
@@ -439,12 +443,15 @@ TEST(RenderLights, PathTracerBdptAndFinalGatherAgreeOnALitBox) {
         << "channel " << c;
     EXPECT_NEAR(preview.mean[c], gather.mean[c], 5 * gather.sigma[c] + 0.05 * gather.mean[c])
         << "channel " << c;
+    EXPECT_NEAR(hybrid.mean[c], path.mean[c],
+                5 * std::hypot(path.sigma[c], hybrid.sigma[c]) + 0.02 * path.mean[c])
+        << "channel " << c;
   }
   std::printf(
       "lit box mean (r): path %.5f ± %.5f, bdpt %.5f ± %.5f, gather %.5f ± %.5f, "
-      "gather 0 %.5f\n",
+      "gather 0 %.5f, gather 0 light rays 4 %.5f ± %.5f\n",
       path.mean.r, path.sigma.r, bdpt.mean.r, bdpt.sigma.r, gather.mean.r, gather.sigma.r,
-      preview.mean.r);
+      preview.mean.r, hybrid.mean.r, hybrid.sigma.r);
 }
 
 }  // namespace
