@@ -262,7 +262,7 @@ def summarise(name, options, rows, out):
             times[r["label"]] = {"seconds": r["seconds"], "how": f"one run, error {r['error']:.4f}"
                                  + (" (above the level)" if r["error"] > options["level"] else "")}
     for t in times.values():
-        t["cycles_over_this"] = times["Cycles bake"]["seconds"] / t["seconds"]
+        race.settle_ratio(t, times["Cycles bake"]["seconds"])
     meta = os.path.join(out, f"bake_{name}.meta.json")
     return {"level": options["level"], "rows": summary, "time_to_level": times,
             "provenance": json.load(open(meta)) if os.path.isfile(meta) else None}
@@ -289,7 +289,8 @@ def write_summary(results, out):
         lines += ["", f"Time to {result['level']:.0%} texel error:", "",
                   "| method | seconds | Cycles' time / this | how |", "| --- | --- | --- | --- |"]
         for lab, t in result["time_to_level"].items():
-            lines.append(f"| {lab} | {t['seconds']:.1f} | {t['cycles_over_this']:.2f} | {t['how']} |")
+            lines.append(f"| {lab} | {race.seconds_text(t)} | {race.ratio_text(t)} | "
+                         f"{t['how']} |")
         lines.append("")
     with open(os.path.join(out, "bake_summary.md"), "w") as f:
         f.write("\n".join(lines))

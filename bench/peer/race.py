@@ -229,6 +229,12 @@ def time_to_level(rows, level, key="error"):
     if reached:
         return min(reached), "first row already below"
     t1, e1 = min(pts, key=lambda p: p[1])
+    # An error that has stopped falling (a bias: the solution's mesh) is not extrapolated: it
+    # falls slower than time^-1/4 between the last two rows.
+    if len(pts) >= 2:
+        (ta, ea), (tb, eb) = pts[-2], pts[-1]
+        if eb > ea * (ta / tb) ** 0.25:
+            return math.inf, f"not reached: the error levels off ({eb:.3f} at {tb:.1f} s)"
     return t1 * (e1 / level) ** 2, "extrapolated (error ~ time^-1/2)"
 
 
@@ -298,7 +304,7 @@ def summarise(name, scene, rows, out):
         seconds, how = time_to_level([r for r in summary if r["label"] == label], scene["level"])
         times[label] = {"seconds": seconds, "how": how}
     for t in times.values():
-        t["cycles_over_this"] = times["Cycles"]["seconds"] / t["seconds"]
+        settle_ratio(t, times["Cycles"]["seconds"])
     meta = os.path.join(out, f"{name}.meta.json")
     return {"level": scene["level"], "rows": summary, "time_to_level": times,
             "provenance": json.load(open(meta)) if os.path.isfile(meta) else None}
@@ -351,6 +357,23 @@ def provenance(args):
             "repeats": args.repeats, "threads": THREADS, "blender": blender}
 
 
+def settle_ratio(t, cycles_seconds):
+    """Cycles' time over this method's; both null (JSON) where the method does not reach the level."""
+    if math.isfinite(t["seconds"]):
+        t["cycles_over_this"] = cycles_seconds / t["seconds"]
+    else:
+        t["seconds"] = t["cycles_over_this"] = None
+
+
+def seconds_text(t):
+    """A time to the level for the tables: `not reached` where the error levels off above it."""
+    return "not reached" if t["seconds"] is None else f"{t['seconds']:.1f}"
+
+
+def ratio_text(t):
+    return "" if t["cycles_over_this"] is None else f"{t['cycles_over_this']:.2f}"
+
+
 def write_summary(results, out):
     with open(os.path.join(out, "summary.json"), "w") as f:
         json.dump(results, f, indent=1)
@@ -370,7 +393,7 @@ def write_summary(results, out):
         lines += ["", f"Time to {result['level']:.0%} plain relative RMSE against the Cycles reference:",
                   "", "| method | seconds | Cycles' time / this | how |", "| --- | --- | --- | --- |"]
         for label, t in result["time_to_level"].items():
-            lines.append(f"| {label} | {t['seconds']:.1f} | {t['cycles_over_this']:.2f} | {t['how']} |")
+            lines.append(f"| {label} | {seconds_text(t)} | {ratio_text(t)} | {t['how']} |")
         lines.append("")
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write("\n".join(lines))

@@ -482,11 +482,9 @@ Rgb FinalGather::outgoingRadiance(int element, const TexelFootprint& footprint, 
   if (m.isSpecular()) return {};
   if (hit.diffuse.maxComponent() == 0) return m.emission;
   Rgb variance;
-  // The gather rays draw from the rng first, then the shadow rays: the order GCC gave the
-  // unsequenced sum `directLight(…) + gatherLight(…)` this was before, so bakes stay bit for bit.
   if (indirectFromSolution()) {
-    const Rgb direct = directLight(hit, sampler, counts, &variance, &footprint) +
-                       gatherLight(hit, sampler, counts, &variance, &footprint);
+    const Rgb along = gatherLight(hit, sampler, counts, &variance, &footprint);
+    const Rgb direct = along + directLight(hit, sampler, counts, &variance, &footprint);
     for (int k = 0; k < 3; ++k) standardError[k] = hit.diffuse[k] * std::sqrt(variance[k]);
     // A buried point (under a box resting on the floor) takes no interpolated light from the
     // exposed part beside it, as the interpolated bake leaves it dark.
@@ -495,6 +493,8 @@ Rgb FinalGather::outgoingRadiance(int element, const TexelFootprint& footprint, 
                              : interpolatedIndirect(element, hit.u, hit.v);
     return m.emission + hit.diffuse * nonNegative(direct + indirect);
   }
+  // The gather rays draw from the rng first, then the shadow rays: the order GCC gave the
+  // unsequenced sum `directLight(…) + gatherLight(…)` this was before, so bakes stay bit for bit.
   const Rgb gathered = gatherLight(hit, sampler, counts, &variance, &footprint);
   const Rgb direct = directLight(hit, sampler, counts, &variance, &footprint);
   for (int k = 0; k < 3; ++k) standardError[k] = hit.diffuse[k] * std::sqrt(variance[k]);
@@ -533,11 +533,16 @@ Rgb FinalGather::radiance(const Eigen::Vector3d& startOrigin, const Eigen::Vecto
       ++counts.gathersSkipped;
       return weight * m.emission;
     }
-    const Rgb reflected =
-        indirectFromSolution()
-            ? nonNegative(directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts) +
-                          interpolatedIndirect(hit.element, hit.u, hit.v))
-            : directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts);
+    if (indirectFromSolution()) {
+      // In sequence, so that every compiler draws the points alike: the cosine rays first, then
+      // the shadow rays, as the gather below draws them.
+      const Rgb along = gatherLight(hit, sampler, counts);
+      const Rgb direct = directLight(hit, sampler, counts);
+      return weight * (m.emission +
+                       hit.diffuse * nonNegative(direct + along +
+                                                 interpolatedIndirect(hit.element, hit.u, hit.v)));
+    }
+    const Rgb reflected = directLight(hit, sampler, counts) + gatherLight(hit, sampler, counts);
     return weight * (m.emission + hit.diffuse * reflected);
   }
 }
