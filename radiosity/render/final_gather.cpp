@@ -9,6 +9,7 @@
 
 #include "radiosity/core/rng.h"
 #include "radiosity/pipeline/emitter_first_shot.h"
+#include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/render/scattering.h"
 #include "radiosity/render/sobol_sampler.h"
 #include "radiosity/scene/surface_textures.h"
@@ -39,6 +40,31 @@ constexpr int kMeanDirectRays = 512;
 Rgb nonNegative(Rgb light) {
   for (int c = 0; c < 3; ++c) light[c] = std::max(0.0, light[c]);
   return light;
+}
+
+// Calls fn(hit, k) at each of `points` Sobol points k (stream `key`) of element e that lies in its
+// exposed part (element_exposure.h), `hit` placed there, facing out of the element's front; the
+// number of such points. The solution's B is over the exposed part: so are the means over it.
+template <class Fn>
+int forEachExposedPoint(const RenderScene& scene, const ElementExposure& exposure, int e,
+                        int points, uint64_t key, Fn&& fn) {
+  const PatchMesh& mesh = scene.mesh();
+  const auto c = mesh.corners(e);
+  SurfaceHit hit;
+  hit.element = e;
+  hit.normal = mesh.normal(e);
+  hit.front = true;
+  hit.material = &scene.material(e);
+  int exposed = 0;
+  for (int k = 0; k < points; ++k) {
+    const Point2 p = SobolSampler::point(k, streamKey(key, e, 1));
+    if (exposure.buried(e, p.x, p.y)) continue;
+    ++exposed;
+    const double r = std::sqrt(p.x);
+    hit.position = (1 - r) * c[0] + r * (1 - p.y) * c[1] + r * p.y * c[2];
+    fn(static_cast<const SurfaceHit&>(hit), k);
+  }
+  return exposed;
 }
 
 std::vector<double> exposedAreas(const PatchMesh& mesh, const ElementExposure& exposure) {
@@ -122,28 +148,16 @@ FinalGather::ElementLight FinalGather::meanLightSample() const {
   tbb::parallel_for(tbb::blocked_range<int>(0, n), [&](const tbb::blocked_range<int>& range) {
     RayCounts unused;
     for (int e = range.begin(); e < range.end(); ++e) {
-      const Material& m = scene_.material(e);
-      if (m.isSpecular() || rho_[e].maxComponent() == 0) continue;
-      const auto c = mesh.corners(e);
-      SurfaceHit hit;
-      hit.element = e;
-      hit.normal = mesh.normal(e);
-      hit.front = true;
-      hit.material = &m;
+      if (scene_.material(e).isSpecular() || rho_[e].maxComponent() == 0) continue;
       Rgb sum;
-      int lit = 0, exposed = 0;
-      for (int k = 0; k < kPoints; ++k) {
-        const Point2 p = SobolSampler::point(k, streamKey(0x4d45414e, e, 1));
-        // The solution's B is over the element's exposed part (element_exposure.h): so is the
-        // mean of its direct light.
-        if (exposure_.buried(e, p.x, p.y)) continue;
-        ++exposed;
-        const double r = std::sqrt(p.x);
-        hit.position = (1 - r) * c[0] + r * (1 - p.y) * c[1] + r * p.y * c[2];
-        const Rgb v = lightSample(hit, SobolSampler::point(k, streamKey(0x4d45414e, e, 2)), unused);
-        lit += v.maxComponent() > 0;
-        sum += v;
-      }
+      int lit = 0;
+      const int exposed = forEachExposedPoint(
+          scene_, exposure_, e, kPoints, 0x4d45414e, [&](const SurfaceHit& hit, int k) {
+            const Rgb v =
+                lightSample(hit, SobolSampler::point(k, streamKey(0x4d45414e, e, 2)), unused);
+            lit += v.maxComponent() > 0;
+            sum += v;
+          });
       light.mean[e] = exposed > 0 ? sum / exposed : Rgb();
       light.uniform[e] = lit == 0 || lit == exposed;
     }
@@ -155,17 +169,10 @@ std::vector<Rgb> FinalGather::meanDirectLight() const {
   const PatchMesh& mesh = scene_.mesh();
   const int n = mesh.elementCount();
   std::vector<Rgb> direct = meanSceneLight();
-  // The emitters' by the solve's own estimator of their first shot (emitter_first_shot.h), every
-  // emitter shot, however large: bounded beside an emitter, where a shadow ray's E·cos·cos/r²
-  // has no bound.
-  RadiosityProblem problem;
-  problem.emission.resize(n);
-  problem.reflectance = rho_;
-  problem.area.resize(n);
-  for (int e = 0; e < n; ++e) {
-    problem.emission[e] = M_PI * emitted_[e];
-    problem.area[e] = mesh.area(e);
-  }
+  // The emitters' by the solve's own estimator of their first shot (emitter_first_shot.h) on the
+  // solve's own problem (E and ρ as it shoots them, cut-outs too), every emitter shot, however
+  // large: bounded beside an emitter, where a shadow ray's E·cos·cos/r² has no bound.
+  RadiosityProblem problem = makeProblem(scene_.scene(), mesh, &exposure_);
   EmitterFirstShot shot(mesh, scene_.caster(), exposure_, 0x6469726563740000ull, kMeanDirectRays,
                         /*largeEmitterShare=*/1.0);
   shot.apply(problem);
@@ -186,27 +193,16 @@ std::vector<Rgb> FinalGather::meanSceneLight() const {
   tbb::parallel_for(tbb::blocked_range<int>(0, n), [&](const tbb::blocked_range<int>& range) {
     RayCounts unused;
     for (int e = range.begin(); e < range.end(); ++e) {
-      const Material& m = scene_.material(e);
-      if (m.isSpecular() || rho_[e].maxComponent() == 0) continue;
-      const auto c = mesh.corners(e);
-      SurfaceHit hit;
-      hit.element = e;
-      hit.normal = mesh.normal(e);
-      hit.front = true;
-      hit.material = &m;
+      if (scene_.material(e).isSpecular() || rho_[e].maxComponent() == 0) continue;
       Rgb sum;
-      int exposed = 0;
-      for (int k = 0; k < kPoints; ++k) {
-        const Point2 p = SobolSampler::point(k, streamKey(0x4c494748, e, 1));
-        if (exposure_.buried(e, p.x, p.y)) continue;
-        ++exposed;
-        const double r = std::sqrt(p.x);
-        hit.position = (1 - r) * c[0] + r * (1 - p.y) * c[1] + r * p.y * c[2];
-        sum += lights.deltaIrradiance(scene_, hit, unused);
-        for (int a = 0; a < lights.areaCount(); ++a)
-          sum += lights.sampleArea(
-              a, scene_, hit, SobolSampler::point(k, streamKey(0x4c494748, e, 2 + a)), unused, 0.0);
-      }
+      const int exposed = forEachExposedPoint(
+          scene_, exposure_, e, kPoints, 0x4c494748, [&](const SurfaceHit& hit, int k) {
+            sum += lights.deltaIrradiance(scene_, hit, unused);
+            for (int a = 0; a < lights.areaCount(); ++a)
+              sum += lights.sampleArea(a, scene_, hit,
+                                       SobolSampler::point(k, streamKey(0x4c494748, e, 2 + a)),
+                                       unused, 0.0);
+          });
       mean[e] = exposed > 0 ? sum / (exposed * M_PI) : Rgb();
     }
   });

@@ -91,9 +91,10 @@ class FinalGather : public Integrator {
   Rgb directLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
                   Rgb* variance = nullptr,
                   const TexelFootprint* footprint = nullptr) const;  // ∫ L_e cos dω / π
+  // The mean incoming radiance along cosine rays: the solution's reflected light (gather), or
+  // under indirectFromSolution only the lights they meet (lightAlong), the shadow rays' MIS pair.
   Rgb gatherLight(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
-                  Rgb* variance = nullptr,
-                  const TexelFootprint* footprint = nullptr) const;  // mean incoming reflected L
+                  Rgb* variance = nullptr, const TexelFootprint* footprint = nullptr) const;
   // `count` positions on hit's element spread over `footprint` (n-rooks stratified) into `out`;
   // none, and nothing drawn from `sampler`, when there is no footprint or it is a point.
   void spreadOrigins(const SurfaceHit& hit, const TexelFootprint* footprint, Sampler& sampler,
