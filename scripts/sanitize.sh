@@ -6,7 +6,8 @@
 #   bash scripts/sanitize.sh --fuzz   # clang, with the libFuzzer targets in the same build, so
 #                                     # scripts/fuzz.sh can reuse it (.ci/run: ASAN_BUILD=build-fuzz)
 # Environment: ASAN_BUILD (default build-asan), JOBS (build jobs, 2), LABEL (ctest label,
-# default unit; "" runs everything). ccache is used where it is installed (CCACHE_DISABLE=1
+# default unit; "" runs everything); scripts/run_tests.sh runs them, so a label that selects
+# nothing, or a test the build does not register, fails. ccache is used where it is installed (CCACHE_DISABLE=1
 # turns it off). LeakSanitizer reports of third-party libraries are suppressed by
 # tests/sanitizer/lsan.supp (each entry says why); the project's own leaks are not.
 set -euo pipefail
@@ -24,10 +25,11 @@ if command -v ccache >/dev/null 2>&1; then
   flags+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 # The compiler is fixed when a build directory is first configured: one directory per choice.
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRADIOSITY_TESTS=ON "${flags[@]}" >/dev/null
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRADIOSITY_TESTS=ON \
+  -DRADIOSITY_VIEWER=ON -DRADIOSITY_REQUIRE_VIEWER=ON "${flags[@]}" >/dev/null
 cmake --build "$build" -j"${JOBS:-2}"
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
 label="${LABEL-unit}"
-ctest --test-dir "$build" ${label:+-L "$label"} --output-on-failure -j2
+bash scripts/run_tests.sh "$build" ${label:+-L "$label"} --output-on-failure -j2

@@ -20,23 +20,31 @@ packages=(
   libtinygltf-dev      # glTF 2.0 export (radiosity bake)
   libvtk9-dev xvfb xauth # viewer (radiosity view, solution.vtp); Xvfb for off-screen screenshots
   zlib1g-dev           # deflates the PNGs written; the viewer inflates solution.vtp's blocks to check them
+  python3              # scripts/check_test_registration.py; the Python test drivers in tests/bench, tests/slow
 )
+# The Khronos glTF validator (tools/gltf-validator, pinned by its package-lock.json) runs on node;
+# Debian's nodejs and npm, unless a node and npm are already on PATH.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  packages+=(nodejs npm)
+fi
 # `scripts/setup.sh --fuzz`: clang and its libFuzzer runtime too (scripts/fuzz.sh; issue 9).
 if [[ " $* " == *" --fuzz "* ]]; then packages+=(clang libclang-rt-14-dev); fi
 # `scripts/setup.sh --format`: clang-format for the formatting check (scripts/check_format.sh).
 if [[ " $* " == *" --format "* ]]; then packages+=(clang-format); fi
+# `scripts/setup.sh --references`: the independent references of the test suite that the project
+# did not write: Blender 3.4 (its glTF importer reads the baked .glb; Cycles checks the race's
+# conventions) and numpy (the bake conventions test). scripts/test.sh asks for them: the whole
+# suite runs them, and under CI=true a skipped external check fails CI (scripts/run_tests.sh).
+if [[ " $* " == *" --references "* ]]; then packages+=(blender python3-numpy); fi
 # `scripts/setup.sh --bench`: matplotlib for the benchmark's PNG plots (bench/run_all.sh; issue 8)
 # and Blender (3.4), whose Cycles the side-by-side race renders with (bench/peer/race.py; issue 17).
 if [[ " $* " == *" --bench "* ]]; then packages+=(python3-matplotlib python3-numpy blender); fi
 
-# The Khronos glTF validator for the bake tests (npm, pinned by tools/gltf-validator/package-lock.json),
-# only where node and npm exist; the test that needs it skips with a message otherwise.
+# The Khronos glTF validator for the bake tests (npm, pinned by tools/gltf-validator/package-lock.json).
 install_gltf_validator() {
   local dir
   dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/tools/gltf-validator"
-  if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
-    echo "setup: node/npm not found: the glTF validator test will be skipped"
-  elif [ ! -d "$dir/node_modules/gltf-validator" ]; then
+  if [ ! -d "$dir/node_modules/gltf-validator" ]; then
     echo "setup: installing the glTF validator into $dir"
     npm ci --prefix "$dir" --no-audit --no-fund --loglevel=error
   fi
