@@ -3,6 +3,7 @@
 // (unknown option, missing argument), 3 a failed internal check (a bug in radiosity),
 // 130 / 143 interrupted by SIGINT / SIGTERM.
 #include <cstdio>
+#include <exception>
 
 #include "radiosity/app/commands.h"
 #include "radiosity/app/exit_codes.h"
@@ -28,6 +29,11 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
     std::fprintf(stderr, "error: %s\nRun with --help for the options.\n", e.what());
     return rad::kExitUsage;
+  } catch (const std::exception& e) {
+    // An option's own callback refused its value (--sky, --sun: an InputError naming the
+    // option): bad input, as when the command checks it later.
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return rad::kExitError;
   }
 
   // Ctrl-C / SIGTERM: stop within a second, leave no partial output, exit 128 + signal.

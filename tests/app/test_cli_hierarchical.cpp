@@ -55,11 +55,18 @@ TEST(CliHierarchical, CornellBoxAgreesWithGaussSeidelAndReportsItsLinks) {
   EXPECT_GT(h["clusters"].get<int>(), 0);
   EXPECT_LE(h["bytes_per_element"].get<double>(), 2048.0);
   EXPECT_GT(h["peak_memory_bytes"].get<double>(), 0);
-  // The same light leaves the surfaces as with Gauss–Seidel over element rows, within the two
-  // estimates' Monte Carlo noise (about 1% on the direct light at these rays, measured).
-  const double ratio =
-      leavingPower(hierarchical / "elements.csv") / leavingPower(gathering / "elements.csv");
-  EXPECT_NEAR(ratio, 1.0, 0.03);
+  // The same light is reflected as with Gauss–Seidel over element rows: Σ A (B − E), the leaving
+  // power less the emitted (half of it here, which both share exactly), within the two
+  // estimates' Monte Carlo noise. Its seed-to-seed standard deviation at these settings is 0.67%
+  // for the rows and 0.12% for the hierarchy (seeds 1-4 each, 2026-12-07: `radiosity solve
+  // cornell_box.obj --elements 600 --rays 1024 --solver S --seed N`), so the difference of two
+  // runs has σ = 0.68%: within 4σ, 2.7%.
+  const double emitted = summary["solver"]["emitted_power"];
+  const double gatheringEmitted = readJson(gathering / "summary.json")["solver"]["emitted_power"];
+  EXPECT_NEAR(gatheringEmitted, emitted, 1e-9 * emitted);
+  const double ratio = (leavingPower(hierarchical / "elements.csv") - emitted) /
+                       (leavingPower(gathering / "elements.csv") - emitted);
+  EXPECT_NEAR(ratio, 1.0, 0.027);
   for (const char* name : {"vertex_colors.ply", "solution.vtp", "solution.json"})
     EXPECT_TRUE(std::filesystem::is_regular_file(hierarchical / name)) << name;
   std::filesystem::remove_all(hierarchical);

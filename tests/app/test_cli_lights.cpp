@@ -176,7 +176,11 @@ TEST(CliLights, BadShortcutsAreErrors) {
   for (const std::string args : {"--sky 1 -1 1", "--sun 0 0 0 1 1 1", "--sun 0 -1 0 nan 1 1"}) {
     const auto result = testing::runRadiosity("solve " + scene.string() + " --out " +
                                               (dir / "out").string() + " " + args);
-    EXPECT_NE(result.exitCode, 0) << args;
+    // Refused by the option's own check while the command line is read: bad input (1), named.
+    EXPECT_EQ(result.exitCode, 1) << args << "\n" << result.stderrText;
+    EXPECT_NE(result.stderrText.find(args.substr(0, 5) + ":"), std::string::npos)
+        << args << "\n"
+        << result.stderrText;
     EXPECT_FALSE(fs::exists(dir / "out")) << args;
   }
   fs::remove_all(dir);

@@ -132,7 +132,8 @@ TEST(CliUpdate, BadInputLeavesTheOutputsAsTheyWere) {
   EXPECT_NE(r.stderrText.find("--keep-factors"), std::string::npos) << r.stderrText;
   // A shooting solver cannot start from the previous solution.
   r = runRadiosity("update " + kept.string() + " --solver progressive");
-  EXPECT_NE(r.exitCode, 0);
+  EXPECT_EQ(r.exitCode, 2) << r.stderrText;  // not one of the option's choices: usage
+  EXPECT_NE(r.stderrText.find("--solver"), std::string::npos) << r.stderrText;
   // An elements.csv of another solve (one element): named, and left as it was.
   const std::string oneRow = csv.substr(0, csv.find('\n', csv.find('\n') + 1) + 1);
   std::ofstream(kept / "elements.csv", std::ios::binary) << oneRow;

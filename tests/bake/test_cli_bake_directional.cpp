@@ -183,7 +183,8 @@ TEST(CliBakeDirectional, BrokenOptionRulesFailAndWriteNothing) {
     EXPECT_FALSE(fs::exists(out)) << c.options;
   }
   const auto r = runRadiosity(base + "--directional --directional-rays 0");
-  EXPECT_NE(r.exitCode, 0);
+  EXPECT_EQ(r.exitCode, 2) << r.stderrText;  // out of the option's range: a usage error
+  EXPECT_NE(r.stderrText.find("--directional-rays"), std::string::npos) << r.stderrText;
   EXPECT_FALSE(fs::exists(out));
   fs::remove_all(dir);
 }

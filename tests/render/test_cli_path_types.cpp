@@ -24,7 +24,7 @@ void expectError(const std::string& arguments, const std::string& fragment) {
   const fs::path out = scratchPath("path_types_error");
   const auto r = runRadiosity("render " + kFurnace + " --out " + out.string() + kFurnaceView + " " +
                               arguments);
-  EXPECT_NE(r.exitCode, 0) << arguments;
+  EXPECT_EQ(r.exitCode, 1) << arguments << "\n" << r.stderrText;
   EXPECT_NE(r.stderrText.find(fragment), std::string::npos) << arguments << "\n" << r.stderrText;
   EXPECT_FALSE(fs::exists(out / "render.exr")) << arguments;
 }

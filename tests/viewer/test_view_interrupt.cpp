@@ -1,5 +1,6 @@
 // `radiosity view --screenshot` interrupted, as solve/render/bake: a pending interrupt writes no
-// PNG, and Ctrl-C during the run ends it within a second with 130 and nothing left behind.
+// PNG, and Ctrl-C during the run ends it with 130, "interrupted" and nothing left behind (how
+// soon is bench/interrupt_latency.py's to measure; the 30 s below only guards against a hang).
 // Needs an X display (Debian's VTK renders off-screen through X): run under xvfb-run -a.
 #include <gtest/gtest.h>
 
@@ -74,12 +75,8 @@ TEST_F(ViewInterrupt, CtrlCDuringTheRunLeavesNoScreenshot) {
   ASSERT_TRUE(child.waitForHandler(SIGINT, 30.0)) << "no SIGINT handler installed";
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ASSERT_TRUE(child.running()) << "the run ended before the signal; make it longer";
-  const auto sent = std::chrono::steady_clock::now();
   child.signal(SIGINT);
-  ASSERT_TRUE(child.waitFor(5.0)) << "still running 5 s after Ctrl-C";
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
-  EXPECT_LT(seconds, 1.0) << "took " << seconds << " s to stop";
+  ASSERT_TRUE(child.waitFor(30.0)) << "still running 30 s after Ctrl-C: it hangs";
   ASSERT_TRUE(WIFEXITED(child.status())) << "killed by signal " << WTERMSIG(child.status());
   EXPECT_EQ(WEXITSTATUS(child.status()), 130);
   std::ifstream in(err);
