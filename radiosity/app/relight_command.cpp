@@ -14,16 +14,13 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/kept_factors.h"
 #include "radiosity/pipeline/relight.h"
 #include "radiosity/scene/scene_overrides.h"
 
 namespace rad {
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 struct RelightOptions {
   std::string dir;

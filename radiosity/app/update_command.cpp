@@ -15,16 +15,13 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/pipeline/incremental_update.h"
 #include "radiosity/pipeline/kept_factors.h"
 
 namespace rad {
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 struct UpdateOptions {
   std::string dir;

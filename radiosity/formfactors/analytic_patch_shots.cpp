@@ -11,17 +11,12 @@
 #include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
 #include "radiosity/core/rng.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/point_to_polygon.h"
 #include "radiosity/formfactors/receiver_points.h"
 
 namespace rad {
-namespace {
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-}  // namespace
-
 AnalyticPatchShots::AnalyticPatchShots(const PatchMesh& mesh, const RayCaster& rays,
                                        AnalyticOptions options)
     : mesh_(mesh), rays_(rays), options_(options), rows_(mesh.shooterCount()) {

@@ -6,14 +6,9 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/core/progress.h"
+#include "radiosity/core/seconds_since.h"
 
 namespace rad {
-namespace {
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-}  // namespace
-
 FormFactorCache::FormFactorCache(const HemisphereFormFactors& method)
     : method_(method), rows_(method.mesh().elementCount()) {}
 
