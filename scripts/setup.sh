@@ -13,9 +13,10 @@ packages=(
   nlohmann-json3-dev   # summary.json
   libcli11-dev         # command-line parsing
   libopenexr-dev       # HDR images (EXR)
-  libstb-dev           # PNG writer (stb_image_write); TGA, BMP and HDR textures (stb_image)
+  libstb-dev           # PNG writer (stb_image_write); TGA and HDR textures (stb_image)
   libpng-dev           # PNG textures
   libjpeg62-turbo-dev  # JPEG textures
+  libopenimageio-dev   # BMP (every variant) and TIFF textures
   libgtest-dev         # tests
   libtinygltf-dev      # glTF 2.0 export (radiosity bake)
   libvtk9-dev xvfb xauth # viewer (radiosity view, solution.vtp); Xvfb for off-screen screenshots

@@ -32,13 +32,18 @@ DecodedImage decodeImage(const unsigned char* bytes, std::size_t size, const std
     return {};
   };
   // PNG and JPEG, nearly every texture, go to the libraries every browser and image tool fuzzes
-  // and patches; stb_image reads only the simpler formats that remain.
+  // and patches; BMP (all its header versions and bit-field layouts) and TIFF to OpenImageIO;
+  // stb_image reads only the simpler formats that remain (TGA, Radiance HDR).
   DecodedImage image;
   std::string error;
   if (startsWith(bytes, size, "\x89PNG\r\n\x1a\n", 8))
     error = image_decoders::decodePng(bytes, size, refuseSize, image);
   else if (startsWith(bytes, size, "\xff\xd8\xff", 3))
     error = image_decoders::decodeJpeg(bytes, size, refuseSize, image);
+  else if (startsWith(bytes, size, "BM", 2))
+    error = image_decoders::decodeWithOpenImageIO("bmp", bytes, size, refuseSize, image);
+  else if (startsWith(bytes, size, "II*\0", 4) || startsWith(bytes, size, "MM\0*", 4))
+    error = image_decoders::decodeWithOpenImageIO("tiff", bytes, size, refuseSize, image);
   else
     error = image_decoders::decodeWithStb(bytes, size, refuseSize, image);
   if (!error.empty()) throw InputError(source, 0, error);

@@ -18,7 +18,10 @@ std::string decodePng(const unsigned char* bytes, std::size_t size, const SizeCh
                       DecodedImage& image);
 std::string decodeJpeg(const unsigned char* bytes, std::size_t size, const SizeCheck& refuseSize,
                        DecodedImage& image);
-// TGA, BMP and Radiance HDR.
+// BMP (every variant) and TIFF: `reader` is OpenImageIO's format name ("bmp", "tiff").
+std::string decodeWithOpenImageIO(const char* reader, const unsigned char* bytes, std::size_t size,
+                                  const SizeCheck& refuseSize, DecodedImage& image);
+// TGA and Radiance HDR.
 std::string decodeWithStb(const unsigned char* bytes, std::size_t size, const SizeCheck& refuseSize,
                           DecodedImage& image);
 

@@ -1,10 +1,11 @@
-// TGA, BMP and Radiance HDR through stb_image, compiled privately into this file only
-// (libstb-dev's header). PNG and JPEG are read by libpng and libjpeg-turbo instead, and are
-// compiled out of stb here so that no file can reach its decoders for them.
+// TGA and Radiance HDR through stb_image, compiled privately into this file only (libstb-dev's
+// header). PNG and JPEG are read by libpng and libjpeg-turbo, BMP by OpenImageIO instead; they
+// are compiled out of stb here so that no file can reach its decoders for them.
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_NO_PNG
 #define STBI_NO_JPEG
+#define STBI_NO_BMP
 #define STBI_NO_PSD
 #define STBI_NO_GIF
 #define STBI_NO_PIC
@@ -32,7 +33,7 @@ std::string decodeWithStb(const unsigned char* bytes, std::size_t size, const Si
   const int length = static_cast<int>(size);  // decodeImage refuses anything over INT32_MAX
   int w = 0, h = 0, channels = 0;
   if (!stbi_info_from_memory(bytes, length, &w, &h, &channels))
-    return std::string("not a readable image (PNG, JPEG, TGA, BMP or HDR): ") +
+    return std::string("not a readable image (PNG, JPEG, BMP, TIFF, TGA or Radiance HDR): ") +
            stbi_failure_reason();
   const std::string refused = refuseSize(w, h);
   if (!refused.empty()) return refused;

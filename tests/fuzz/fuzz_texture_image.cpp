@@ -1,5 +1,5 @@
 // libFuzzer target: image bytes through decodeTexture() (radiosity/scene/texture.h: libpng,
-// libjpeg-turbo, stb_image for TGA, BMP and HDR),
+// libjpeg-turbo, OpenImageIO for BMP and TIFF, stb_image for TGA and HDR),
 // as an MTL's map_Kd/map_Ke/map_d file or an image embedded in a .glb reaches it, in both
 // encodings. An image it accepts must have its stated size, finite non-negative values (alpha in
 // [0, 1]), and give finite look-ups and area averages.

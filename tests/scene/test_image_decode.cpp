@@ -1,12 +1,20 @@
-// Image decoding (radiosity/scene/image_decode.h): PNG through libpng and JPEG through
-// libjpeg-turbo, each in the layouts real textures use, against images the same libraries'
-// encoders write from known texels; and the errors that name the file.
+// Image decoding (radiosity/scene/image_decode.h): PNG and JPEG in the
+// layouts real textures use, against images libpng's and libjpeg-turbo's own encoders write from
+// known texels; BMP (classic and the 16-bit bit-field variant with a V3 header), Radiance HDR
+// and TIFF written here byte by byte from their specifications; DDS and OpenEXR refused; and the
+// errors that name the file.
+#include <ImfArray.h>
+#include <ImfRgbaFile.h>
 #include <gtest/gtest.h>
 #include <png.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 // clang-format off: jpeglib.h needs size_t and FILE declared before it
@@ -159,6 +167,153 @@ TEST(ImageDecode, SizeLimitsApplyToPngAndJpegHeadersBeforeDecoding) {
       EXPECT_NE(std::string(e.what()).find("4×4"), std::string::npos) << e.what();
     }
     EXPECT_EQ(decodeImage(bytes.data(), bytes.size(), "small", 16).width, 4);
+  }
+}
+
+// Little-endian fields appended to a byte string, as the BMP, TIFF and DDS headers store them.
+void put16(std::vector<unsigned char>& b, uint32_t v) {
+  for (int i = 0; i < 2; ++i) b.push_back(static_cast<unsigned char>(v >> (8 * i)));
+}
+void put32(std::vector<unsigned char>& b, uint32_t v) {
+  for (int i = 0; i < 4; ++i) b.push_back(static_cast<unsigned char>(v >> (8 * i)));
+}
+
+// A 2×1 BMP: 24-bit BGR with a BITMAPINFOHEADER, or 16-bit BI_BITFIELDS (R 0x0F00, G 0x00F0,
+// B 0x000F, alpha 0xF000: 4 bits each) with a 56-byte BITMAPV3INFOHEADER, the variant Maya
+// writes. Texels: red, then green.
+std::vector<unsigned char> bmp(bool sixteenBit) {
+  std::vector<unsigned char> pixels;
+  if (sixteenBit) {
+    put16(pixels, 0xFF00);  // alpha 15, red 15
+    put16(pixels, 0x80F0);  // alpha 8, green 15
+  } else {
+    pixels = {0, 0, 255, 0, 255, 0, 0, 0};  // BGR red, BGR green, 2 bytes of row padding
+  }
+  const uint32_t headerSize = sixteenBit ? 56 : 40, offset = 14 + headerSize;
+  std::vector<unsigned char> b = {'B', 'M'};
+  put32(b, offset + static_cast<uint32_t>(pixels.size()));
+  put32(b, 0);
+  put32(b, offset);
+  put32(b, headerSize);
+  put32(b, 2);                     // width
+  put32(b, 1);                     // height (bottom-up)
+  put16(b, 1);                     // planes
+  put16(b, sixteenBit ? 16 : 24);  // bits per pixel
+  put32(b, sixteenBit ? 3 : 0);    // BI_BITFIELDS or BI_RGB
+  put32(b, static_cast<uint32_t>(pixels.size()));
+  put32(b, 2835), put32(b, 2835), put32(b, 0), put32(b, 0);
+  if (sixteenBit) put32(b, 0x0F00), put32(b, 0x00F0), put32(b, 0x000F), put32(b, 0xF000);
+  b.insert(b.end(), pixels.begin(), pixels.end());
+  return b;
+}
+
+TEST(ImageDecode, BmpClassicAndSixteenBitBitFieldsWithAV3Header) {
+  for (const bool sixteenBit : {false, true}) {
+    const std::vector<unsigned char> bytes = bmp(sixteenBit);
+    const DecodedImage image = decodeImage(bytes.data(), bytes.size(), "zebra.bmp", 1 << 20);
+    ASSERT_EQ(image.width, 2);
+    ASSERT_EQ(image.height, 1);
+    ASSERT_EQ(image.rgba8.size(), 8u);
+    // 4-bit 15 and 8-bit 255 are both full scale.
+    EXPECT_EQ(image.rgba8[0], 255) << sixteenBit;
+    EXPECT_EQ(image.rgba8[1], 0) << sixteenBit;
+    EXPECT_EQ(image.rgba8[2], 0) << sixteenBit;
+    EXPECT_EQ(image.rgba8[4], 0) << sixteenBit;
+    EXPECT_EQ(image.rgba8[5], 255) << sixteenBit;
+    EXPECT_EQ(image.rgba8[6], 0) << sixteenBit;
+  }
+}
+
+// A 2×1 Radiance HDR, flat (not run-length) RGBE texels: 1.5 (mantissa 192, exponent 129) and
+// 0.25 (128, 127) in every channel.
+TEST(ImageDecode, RadianceHdrKeepsItsLinearValues) {
+  const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 2\n";
+  std::vector<unsigned char> bytes(header.begin(), header.end());
+  for (const unsigned char v : {192, 192, 192, 129, 128, 128, 128, 127}) bytes.push_back(v);
+  const DecodedImage image = decodeImage(bytes.data(), bytes.size(), "sky.hdr", 1 << 20);
+  ASSERT_TRUE(image.isFloat());
+  ASSERT_EQ(image.rgbaFloat.size(), 8u);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_FLOAT_EQ(image.rgbaFloat[c], 1.5f);
+    EXPECT_FLOAT_EQ(image.rgbaFloat[4 + c], 0.25f);
+  }
+  EXPECT_FLOAT_EQ(image.rgbaFloat[3], 1.0f);
+}
+
+// A 2×1 uncompressed 8-bit RGBA TIFF, little-endian: a header, the texels, one IFD.
+TEST(ImageDecode, TiffRgbaKeepsItsUnassociatedAlpha) {
+  std::vector<unsigned char> b = {'I', 'I', 42, 0};
+  const std::vector<unsigned char> texels = {200, 100, 50, 128, 10, 20, 30, 255};
+  put32(b, 8 + static_cast<uint32_t>(texels.size()));  // the IFD after the texels
+  b.insert(b.end(), texels.begin(), texels.end());
+  const uint32_t ifd = static_cast<uint32_t>(b.size());
+  const uint32_t bitsAt = ifd + 2 + 11 * 12 + 4;  // BitsPerSample's four values after the IFD
+  const uint32_t entries[][3] = {
+      {256, 3, 2}, {257, 3, 1}, {258, 3, bitsAt},  // width, height, bits (4 values)
+      {259, 3, 1}, {262, 3, 2}, {273, 4, 8},       // no compression, RGB, strip at 8
+      {277, 3, 4}, {278, 3, 1}, {279, 4, 8},       // 4 samples, 1 row, 8 bytes
+      {284, 3, 1}, {338, 3, 2}};                   // chunky, unassociated alpha
+  put16(b, 11);
+  for (const auto& e : entries) {
+    put16(b, e[0]);
+    put16(b, e[1]);
+    put32(b, e[0] == 258 ? 4 : 1);
+    if (e[1] == 3 && e[0] != 258) {
+      put16(b, e[2]);
+      put16(b, 0);
+    } else {
+      put32(b, e[2]);
+    }
+  }
+  put32(b, 0);  // no next IFD
+  for (int i = 0; i < 4; ++i) put16(b, 8);
+  const DecodedImage image = decodeImage(b.data(), b.size(), "wall.tif", 1 << 20);
+  ASSERT_EQ(image.width, 2);
+  ASSERT_EQ(image.rgba8.size(), 8u);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(image.rgba8[i], texels[i]) << i;
+}
+
+// A 2×1 uncompressed 32-bit DDS (DDPF_RGB | DDPF_ALPHAPIXELS, A8R8G8B8) is refused, naming the
+// file: Debian 12's OpenImageIO reads DDS but hung on a malformed one (oiio_decode.cpp).
+TEST(ImageDecode, DdsIsRefusedNamingTheFile) {
+  std::vector<unsigned char> b = {'D', 'D', 'S', ' '};
+  put32(b, 124);                          // header size
+  put32(b, 0x1 | 0x2 | 0x4 | 0x1000);     // caps, height, width, pixel format
+  put32(b, 1), put32(b, 2);               // height, width
+  put32(b, 8), put32(b, 0), put32(b, 0);  // pitch, depth, mipmaps
+  for (int i = 0; i < 11; ++i) put32(b, 0);
+  put32(b, 32), put32(b, 0x40 | 0x1), put32(b, 0), put32(b, 32);  // pixel format: RGB + alpha
+  put32(b, 0x00FF0000), put32(b, 0x0000FF00), put32(b, 0x000000FF), put32(b, 0xFF000000);
+  put32(b, 0x1000), put32(b, 0), put32(b, 0), put32(b, 0), put32(b, 0);  // caps: texture
+  for (const unsigned char v : {50, 100, 200, 255, 30, 20, 10, 64}) b.push_back(v);
+  const std::string message = errorOf(b, "floor.dds");
+  EXPECT_NE(message.find("floor.dds"), std::string::npos) << message;
+  EXPECT_NE(message.find("not a readable image"), std::string::npos) << message;
+}
+
+// OpenEXR, even as OpenEXR's own writer stores it, is refused naming the file and the formats
+// read: Debian 12's OpenEXR 3.1 allocates what a header claims before checking it.
+TEST(ImageDecode, OpenExrIsRefusedWithItsReason) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("decode_" + std::to_string(::getpid()) + ".exr");
+  {
+    Imf::Array2D<Imf::Rgba> texels(1, 2);
+    texels[0][0] = Imf::Rgba(2.5f, 0.5f, 0.125f, 1.0f);
+    texels[0][1] = Imf::Rgba(0.0f, 4.0f, 1.0f, 0.5f);
+    Imf::RgbaOutputFile file(path.c_str(), 2, 1, Imf::WRITE_RGBA);
+    file.setFrameBuffer(&texels[0][0], 1, 2);
+    file.writePixels(1);
+  }
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                         std::istreambuf_iterator<char>());
+  std::filesystem::remove(path);
+  try {
+    decodeImage(bytes.data(), bytes.size(), "env.exr", 1 << 20);
+    ADD_FAILURE() << "an OpenEXR file was decoded";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("env.exr"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("Radiance HDR"), std::string::npos) << e.what();
   }
 }
 
