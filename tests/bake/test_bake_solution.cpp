@@ -82,6 +82,36 @@ TEST(BakeSolution, FurnaceTexelsHoldTheAnalyticRadianceAndIrradiance) {
   }
 }
 
+// The per-texel gather in the furnace: a texel's value is Ke + ρ (direct + gathered), the direct
+// light Ke from every direction (every face emits; the box is convex, so every emitter point
+// is seen) and the gathered light (B_K − E)/π = Ke Σ_{j=1..K} ρ^j from the solution, so its
+// expectation is Ke Σ_{j=0..K+1} ρ^j: one bounce past the solve's. The texels draw independent
+// streams, so the mean of N covered texels has the standard error √(Σ σ_t²)/N from the gather's
+// own per-texel σ_t; the mean lies within 5 of those (a chance of about 6e-7 for a normal mean).
+TEST(BakeSolution, FurnaceGatherIsUnbiasedWithinItsStandardError) {
+  const SolveResult solved = solvedFurnace(200);
+  BakeSpec spec = smallSpec();
+  spec.gather = 16;
+  const BakeResult baked = bakeSolution(solved, SolveOptions(), spec);
+  const double exact = kKe * (bounceSum(0) + std::pow(kRho, kBounces + 1));
+  double sum = 0, variance = 0;
+  size_t n = 0;
+  for (int page = 0; page < baked.layout.pages; ++page)
+    for (size_t t = 0; t < baked.lightmaps[page].state.size(); ++t) {
+      if (baked.lightmaps[page].state[t] != TexelState::Covered) continue;
+      sum += baked.lightmaps[page].radiance.pixels[t][0];
+      // The error pages hold the gather's standard error (grey here: luminance = channel).
+      const double sigma = baked.errorPages[page].radiance.pixels[t][0];
+      variance += sigma * sigma;
+      ++n;
+    }
+  ASSERT_GT(n, 100u);
+  ASSERT_GT(variance, 0);
+  const double mean = sum / n, standardError = std::sqrt(variance) / n;
+  EXPECT_NEAR(mean, exact, 5 * standardError) << "standard error " << standardError;
+  EXPECT_LT(5 * standardError, 0.01 * exact);  // so a bias of 1% would show
+}
+
 // The report's counts: the texels by state make up the pages, the confidence summary covers the
 // covered texels (all lit in the furnace), and the mesh's displayed error of a uniform field is 0
 // (up to rounding: relative 1e-9). bake.json carries the same numbers.
@@ -161,21 +191,8 @@ TEST(BakeSolution, ChartsLieInsideTheirPagesWithoutOverlap) {
   EXPECT_EQ(baked.report.lightmap->pages, layout.pages);
 }
 
-// --light-groups: the Cornell box's ceiling light and the two lamps of two_lamps.lights.json are
-// three layers; the solution is linear in the emission, each texel is linear in B and Le, so the
-// layers' texels sum to the whole's (to double rounding over three terms: 1e-9 relative to the
-// page's brightest texel), as do their vertex values. The report names the groups.
-TEST(BakeSolution, LightGroupLayersSumToTheWhole) {
-  SolveOptions options;
-  options.scenePath = kData + "/cornell_box/cornell_box.obj";
-  options.lights.file = kData + "/cornell_box/two_lamps.lights.json";
-  options.lightGroups = true;
-  options.targetElements = 300;
-  options.raysPerElement = 16;
-  options.threads = 2;
-  const SolveResult solved = solveScene(loadScene(options.scenePath, options.lights), options);
-  BakeSpec spec = smallSpec();
-  const BakeResult baked = bakeSolution(solved, options, spec);
+// The layers' pages and vertex values against the whole's, and the report's groups.
+void expectLayersSumToTheWhole(const BakeResult& baked) {
   ASSERT_EQ(baked.layerLightmaps.size(), 3u);
   ASSERT_EQ(baked.report.lightGroups.size(), 3u);
   EXPECT_EQ(baked.report.lightGroups[1].group.name, "lamp");
@@ -200,6 +217,27 @@ TEST(BakeSolution, LightGroupLayersSumToTheWhole) {
   const nlohmann::json json = bakeJson(baked.report);
   ASSERT_EQ(json["light_groups"].size(), 3u);
   EXPECT_EQ(json["light_groups"][1]["files"][0], "group_lamp_vertex_colors.ply");
+}
+
+// --light-groups: the Cornell box's ceiling light and the two lamps of two_lamps.lights.json are
+// three layers; the solution is linear in the emission, each texel is linear in B and Le, so the
+// layers' texels sum to the whole's (to double rounding over three terms: 1e-9 relative to the
+// page's brightest texel), as do their vertex values. The report names the groups.
+TEST(BakeSolution, LightGroupLayersSumToTheWhole) {
+  SolveOptions options;
+  options.scenePath = kData + "/cornell_box/cornell_box.obj";
+  options.lights.file = kData + "/cornell_box/two_lamps.lights.json";
+  options.lightGroups = true;
+  options.targetElements = 300;
+  options.raysPerElement = 16;
+  options.threads = 2;
+  const SolveResult solved = solveScene(loadScene(options.scenePath, options.lights), options);
+  // Irradiance content too: there each layer's texels subtract its own emitters' Le alone.
+  for (const LightmapContent content : {LightmapContent::Radiance, LightmapContent::Irradiance}) {
+    BakeSpec spec = smallSpec();
+    spec.content = content;
+    expectLayersSumToTheWhole(bakeSolution(solved, options, spec));
+  }
 }
 
 // Without a lightmap: the vertex colours alone, and the report says what was skipped.
