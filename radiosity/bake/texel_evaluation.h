@@ -16,9 +16,10 @@
 
 namespace rad {
 
-// Whether a texel's value is made of the light arriving (H/π) rather than of the interpolated
-// radiance: for irradiance content, and wherever a texture varies the reflectance inside an
-// element (then the texel shows its own texel of the texture times the smooth light arriving).
+// Whether texels are made of the light arriving (H/π at the vertices) rather than of the
+// interpolated radiance alone: for irradiance content, and in a scene with textures, whose
+// textured elements show at each texel their own texel of the texture times the smooth light
+// arriving (the others keep the interpolated radiance).
 bool texelsFromIncidentLight(const Scene& scene, LightmapContent content);
 
 // The solution one set of pages is made of: the whole, or one light group's layer with its own
