@@ -24,8 +24,10 @@ BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interp
   for (int e = 0; e < mesh.elementCount() && !anyTextureUvs; ++e) anyTextureUvs = mesh.hasUvs(e);
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const int chart = layout ? layout->chartOfElement[e] : 0;
+    // Zero where the element has none: Eigen's vectors are not zeroed by `{}`, and these are keys.
+    const Eigen::Vector2d none = Eigen::Vector2d::Zero();
     const std::array<Eigen::Vector2d, 3> textureUvs =
-        mesh.hasUvs(e) ? mesh.cornerUvs(e) : std::array<Eigen::Vector2d, 3>{};
+        mesh.hasUvs(e) ? mesh.cornerUvs(e) : std::array<Eigen::Vector2d, 3>{none, none, none};
     std::array<int, 3> tri;
     for (int k = 0; k < 3; ++k) {
       const int v = interpolation.triangle(e)[k];

@@ -13,6 +13,7 @@
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/output/lightmap_bake.h"
+#include "radiosity/output/lightmap_baked_mesh.h"
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/scene/obj_loader.h"
 #include "radiosity/scene/scene_mesh.h"
@@ -150,6 +151,24 @@ TEST(LightmapBake, EveryFaceOwnsATexel) {
 
 // The elements are rasterised in parallel, each texel going to the lowest-numbered element that
 // claims it: the page must not depend on how many threads baked it or in which order they ran.
+// The exported mesh splits a vertex only where its chart (or its texture UV) changes: the Cornell
+// box has no texture UVs, so its glTF/OBJ vertices are exactly the (vertex, chart) pairs of its
+// element corners. (Its elements' missing texture UVs were once left unset in the vertex keys,
+// which split vertices as whatever the stack held.)
+TEST(LightmapBakedMesh, WithoutTextureUvsAVertexSplitsOnlyBetweenCharts) {
+  const PatchMesh mesh = cornellMesh();
+  const LightmapLayout layout = packLightmapCharts(buildLightmapCharts(mesh), {0, 256, 2, 256});
+  const VertexInterpolation interpolation(mesh);
+  const std::vector<Rgb> radiance(interpolation.vertexCount());
+  const BakedMesh baked =
+      makeBakedMesh(mesh, interpolation, radiance, &layout, {"white", "red", "green", "light"});
+  std::set<std::pair<int, int>> vertexCharts;
+  for (int e = 0; e < mesh.elementCount(); ++e)
+    for (int v : interpolation.triangle(e)) vertexCharts.insert({v, layout.chartOfElement[e]});
+  EXPECT_TRUE(baked.textureUvs.empty());
+  EXPECT_EQ(baked.positions.size(), vertexCharts.size());
+}
+
 TEST(LightmapBake, OneThreadAndManyBakeTheSamePage) {
   const Baked many = bake(cornellMesh(), {0, 128, 2});  // coarse: texels shared by many elements
   // With an evaluator (as the bake's texture detail and per-texel gather use) returning the

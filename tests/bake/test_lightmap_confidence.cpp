@@ -52,8 +52,9 @@ Rgb exactRadiance(const Eigen::Vector3d& x) {
 }
 
 // One bake of a solution as `radiosity bake` forms it without a gather on untextured surfaces
-// (bake_command.cpp): the interpolated values, the confidence map (each element's displayed
-// error), and `exact` evaluated at every texel's point, on one page of `texelSize` texels.
+// (radiosity/bake's texel_evaluation.cpp and confidence_pages.cpp): the interpolated values, the
+// confidence map (each element's displayed error), and `exact` evaluated at every texel's point,
+// on one page of `texelSize` texels.
 struct Baked {
   Lightmap value, error, exact;
 };
