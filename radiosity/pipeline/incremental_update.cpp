@@ -18,6 +18,7 @@
 #include "radiosity/pipeline/element_size.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
+#include "radiosity/pipeline/kept_factors_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/pipeline/resource_limits.h"
 #include "radiosity/pipeline/solve_stages.h"

@@ -6,6 +6,7 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
 #include "radiosity/pipeline/iteration.h"
+#include "radiosity/pipeline/kept_factors_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/pipeline/solve_stages.h"
 #include "radiosity/pipeline/solver_results.h"

@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "radiosity/pipeline/kept_factors.h"
+#include "radiosity/pipeline/kept_factors_stage.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_stages.h"
 
