@@ -18,8 +18,8 @@ namespace rad {
 
 namespace {
 
-// The scene as relight found it against the kept solve: the same geometry and mesh options (the
-// fingerprint), and the same lights, whose first shot is kept.
+// Refuses a scene that no longer fits the kept solve: other geometry or mesh options (the
+// fingerprint), or other lights, whose first shot is kept.
 void checkKeptSceneFits(const KeptFactors& header, const std::string& keptPath,
                         const Scene& scene) {
   if (keptFactorsFingerprint(scene, header.options) != header.fingerprint)
