@@ -14,6 +14,7 @@
 #include "radiosity/core/rng.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/receiver_points.h"
+#include "radiosity/pipeline/solver_results.h"
 #include "radiosity/scene/light_shapes.h"
 
 namespace rad {
@@ -182,8 +183,7 @@ DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, co
       exposure_(exposure),
       seed_(options.seed),
       receiverPoints_(options.receiverPoints),
-      keepPoints_(options.formFactors == FormFactorMethod::Analytic &&
-                  options.receiverPoints == 3) {
+      keepPoints_(keepsPointValues(options)) {
   if (lights) {
     lights_ = *lights;
   } else {

@@ -103,7 +103,7 @@ class DirectLightStage {
   uint64_t seed_;
   int receiverPoints_;
   // Whether the solution keeps B at the receiver points (analytic factors, 3 points; the
-  // condition keepSolution applies), so E_d is wanted there too.
+  // condition keepsPointValues gives), so E_d is wanted there too.
   bool keepPoints_;
   std::vector<size_t> lights_;             // the scene's lights that shoot here
   std::vector<const Light*> pointLights_;  // the point and spot lights among them

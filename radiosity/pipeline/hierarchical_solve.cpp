@@ -1,5 +1,6 @@
 #include "radiosity/pipeline/hierarchical_solve.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "radiosity/core/errors.h"
@@ -7,6 +8,8 @@
 #include "radiosity/core/log.h"
 #include "radiosity/core/seconds_since.h"
 #include "radiosity/hierarchical/hierarchical_radiosity.h"
+#include "radiosity/pipeline/direct_light_stage.h"
+#include "radiosity/pipeline/emitter_first_shot.h"
 
 namespace rad {
 using Clock = std::chrono::steady_clock;
@@ -61,6 +64,30 @@ void solveHierarchical(const SolveOptions& options, const RayCaster& rays,
   report.raysCast += hr.raysCast();
   report.rowsComputed = h.receivers;
   report.shooters = h.receivers;
+}
+
+void solveByLinks(const SolveSetup& setup, Solution& solution, SolveReport& report) {
+  const SolveOptions& options = setup.options;
+  DirectLightStage directLight(solution.scene, *solution.mesh, setup.rays, options,
+                               &setup.exposure);
+  EmitterFirstShot emitterShot(*solution.mesh, setup.rays, setup.exposure, options.seed,
+                               EmitterFirstShot::raysForSolve(options.raysPerElement));
+  auto t = Clock::now();
+  emitterShot.apply(solution.problem);
+  const double emitterSeconds = secondsSince(t);  // form-factor time, added after the solve's
+  report.raysCast += emitterShot.raysCast();
+  if (emitterShot.active())
+    logInfo("emitters' direct light: " + std::to_string(emitterShot.emitters()) +
+            " emitting elements, " + std::to_string(emitterShot.raysCast()) + " shadow rays, " +
+            formatNumber(emitterSeconds) + " s");
+  directLight.apply(solution.problem);  // the lights' first shot: ρ E_d joins the emission
+  noteBlackElements(solution, report);
+  t = Clock::now();
+  solveHierarchical(options, setup.rays, setup.exposure, setup.limits, solution, report);
+  emitterShot.restore(solution.problem, solution.radiosity);
+  directLight.report(report);
+  report.times.solve = std::max(0.0, secondsSince(t) - report.times.formFactors);
+  report.times.formFactors += emitterSeconds;
 }
 
 }  // namespace rad

@@ -3,6 +3,7 @@
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_options.h"
+#include "radiosity/pipeline/solve_stages.h"
 #include "radiosity/visibility/element_exposure.h"
 #include "radiosity/visibility/ray_caster.h"
 
@@ -23,5 +24,10 @@ constexpr int kMaxLinkPasses = 6;
 void solveHierarchical(const SolveOptions& options, const RayCaster& rays,
                        const ElementExposure& exposure, const IterationLimits& limits,
                        Solution& solution, SolveReport& report);
+
+// The hierarchical strategy of solveScene: its links would gather a small lamp's light by chance,
+// so the emitters' direct light by shadow rays first (EmitterFirstShot: the problem becomes
+// R = B − E), the lights' first shot (DirectLightStage), solveHierarchical, then B = R + E.
+void solveByLinks(const SolveSetup& setup, Solution& solution, SolveReport& report);
 
 }  // namespace rad

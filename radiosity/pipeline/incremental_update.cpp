@@ -1,7 +1,5 @@
 #include "radiosity/pipeline/incremental_update.h"
 
-#include <tbb/global_control.h>
-#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -20,9 +18,10 @@
 #include "radiosity/pipeline/element_size.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/iteration.h"
-#include "radiosity/pipeline/mesh_stage.h"
+#include "radiosity/pipeline/kept_factors_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/pipeline/resource_limits.h"
+#include "radiosity/pipeline/solve_stages.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/solvers/gathering_solvers.h"
 #include "radiosity/solvers/solver_factory.h"
@@ -137,6 +136,204 @@ ElementExposure exposureTheEditLeaves(const SolveOptions& options, const PatchMe
   return ElementExposure(mesh, rays, known, isKnown);
 }
 
+// The kept solve and the previous solution belong together, and the scene stops rays as it did.
+void checkKeptSolveFits(const KeptFactors& kept, const std::string& keptPath,
+                        const std::vector<Rgb>& previous,
+                        const std::vector<uint64_t>* previousBuriedCells, const Scene& scene) {
+  if (previous.size() != kept.area.size() ||
+      (previousBuriedCells && previousBuriedCells->size() != kept.area.size()))
+    throw InputError(keptPath, 0,
+                     "the previous solution has " + std::to_string(previous.size()) +
+                         " elements, the kept factors " + std::to_string(kept.area.size()) +
+                         ": not the same solve");
+  if (kept.lightIrradiance.size() != scene.lights.size())
+    throw InputError(keptPath, 0, "changed while it was read: run update again");
+  // A material turned two-sided or given a cut-out stops other rays with no geometry moved: no
+  // edit region would hold the change.
+  for (const auto& [name, visibility] : keptMaterialVisibility(scene)) {
+    const auto was = kept.materialVisibility.find(name);
+    if (was != kept.materialVisibility.end() && was->second != visibility)
+      throw InputError(keptPath, 0,
+                       "material '" + name +
+                           "' stops rays differently than when this solve was kept (its "
+                           "two-sidedness, cut-out or kind changed): update follows geometry "
+                           "edits; solve --keep-factors again");
+  }
+}
+
+// Which elements stayed put, and the region of the edit: the moved or added elements where they
+// are now, and the kept elements no longer there where they were.
+struct EditRegion {
+  std::vector<int> match;          // per element: the kept element it is, or -1
+  std::vector<int> newIndexOfOld;  // per kept element: the element it is now, or -1
+  std::vector<char> moved;         // per element: not in the kept mesh
+  std::vector<std::array<Eigen::Vector3d, 3>> region, oldPlace;
+};
+
+EditRegion findEdit(const KeptFactors& kept, const PatchMesh& mesh, SolveReport::Update& update) {
+  const int n = mesh.elementCount();
+  EditRegion edit;
+  edit.match = matchElements(kept, mesh);
+  edit.newIndexOfOld.assign(kept.area.size(), -1);
+  edit.moved.assign(static_cast<size_t>(n), 0);
+  for (int e = 0; e < n; ++e) {
+    if (edit.match[static_cast<size_t>(e)] >= 0) {
+      edit.newIndexOfOld[static_cast<size_t>(edit.match[static_cast<size_t>(e)])] = e;
+    } else {
+      edit.moved[static_cast<size_t>(e)] = 1;
+      edit.region.push_back(mesh.corners(e));
+    }
+  }
+  update.moved = static_cast<int>(edit.region.size());
+  for (size_t i = 0; i < edit.newIndexOfOld.size(); ++i)
+    if (edit.newIndexOfOld[i] < 0) {
+      edit.region.push_back(kept.corners[i]);
+      edit.oldPlace.push_back(kept.corners[i]);
+      ++update.removed;
+    }
+  logInfo("update: " + std::to_string(n) + " elements, " + std::to_string(update.moved) +
+          " moved or added, " + std::to_string(update.removed) + " moved or removed");
+  return edit;
+}
+
+void noteProbeRays(const ElementExposure& exposure, bool hadBuriedCells, int elements,
+                   SolveReport& report) {
+  report.exposureProbeRays = exposure.probeRays();
+  if (hadBuriedCells)
+    logInfo("buried cells: " + std::to_string(report.update.buriedCellsKept) + " of " +
+            std::to_string(elements) + " elements kept from before the edit, " +
+            std::to_string(exposure.probeRays()) + " probe rays");
+}
+
+// What became of the kept rows of the elements that stayed put with the same exposed area and
+// ray budget (the candidates): per element, whether its row was brought up to date (`reuse`),
+// from which kept row (`keptFrom`), how its counts change, and its rays changed and tested.
+struct KeptRowsTried {
+  std::vector<int> candidates;
+  uint64_t candidateRays = 0;
+  std::vector<char> reuse;
+  std::vector<int> keptFrom;
+  std::vector<RowChanges> changes;
+  std::vector<int> changedRays, raysTested;
+};
+
+KeptRowsTried tryKeptRows(const KeptFactors& kept, const EditRegion& edit,
+                          const HemisphereFormFactors::Edit& casters,
+                          const std::vector<int>& rayMultipliers, const RadiosityProblem& problem,
+                          const FormFactorStage& formFactors, SolveReport::Update& update) {
+  const std::vector<int>& match = edit.match;
+  const auto n = static_cast<size_t>(problem.size());
+  KeptRowsTried tried;
+  tried.reuse.assign(n, 0);
+  tried.keptFrom.assign(n, -1);
+  tried.changes.resize(n);
+  tried.changedRays.assign(n, 0);
+  tried.raysTested.assign(n, 0);
+  for (int e = 0; e < problem.size(); ++e) {
+    const int old = match[static_cast<size_t>(e)];
+    if (old < 0) continue;
+    if (!sameArea(problem.area[e], kept.area[static_cast<size_t>(old)]) ||
+        rayMultipliers[e] != kept.rayMultiplier[static_cast<size_t>(old)]) {
+      ++update.rowsOtherChange;
+      continue;
+    }
+    tried.candidates.push_back(e);
+  }
+  for (int e : tried.candidates) tried.candidateRays += formFactors.hemisphere().raysForRow(e);
+  Progress progress("rays of the kept rows examined", tried.candidateRays, "rays");
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, tried.candidates.size(), 16),
+      [&](const tbb::blocked_range<size_t>& range) {
+        for (size_t k = range.begin(); k != range.end(); ++k) {
+          const int e = tried.candidates[k];
+          const int old = match[static_cast<size_t>(e)];
+          const KeptRowTable::RowView keptRow = kept.rows.view(static_cast<size_t>(old));
+          // Its factor to target t (new numbering): t's kept index in the kept row.
+          auto keptFactor = [&](int t) {
+            const int was = match[static_cast<size_t>(t)];
+            const int* end = keptRow.targets + keptRow.count;
+            const int* at = std::lower_bound(keptRow.targets, end, was);
+            return was >= 0 && at != end && *at == was ? keptRow.values[at - keptRow.targets] : 0.0;
+          };
+          if (formFactors.hemisphere().updateRow(e, keptFactor, keptRow.escaped,
+                                                 tried.changes[static_cast<size_t>(e)], casters,
+                                                 tried.changedRays[e], tried.raysTested[e])) {
+            tried.reuse[static_cast<size_t>(e)] = 1;
+            // The row goes from the kept table to the new one directly, its changes merged in;
+            // the stage holds an empty stand-in meanwhile.
+            tried.keptFrom[static_cast<size_t>(e)] = old;
+          }
+          progress.advance(formFactors.hemisphere().raysForRow(e));
+        }
+      });
+  progress.finish(std::to_string(tried.candidates.size()) + " rows");
+  update.raysOfKeptRows = tried.candidateRays;
+  return tried;
+}
+
+// Counts the rows reused as they were, updated ray by ray and cast again, and logs them.
+void countKeptRows(const KeptRowsTried& tried, int elements, double seconds,
+                   SolveReport::Update& update) {
+  for (int e : tried.candidates) {
+    update.raysTested += static_cast<uint64_t>(tried.raysTested[e]);
+    if (!tried.reuse[static_cast<size_t>(e)]) {
+      ++update.rowsOtherChange;  // a tie at float precision: cast again
+    } else if (tried.changedRays[e] > 0) {
+      ++update.rowsUpdated;
+      update.raysChanged += static_cast<uint64_t>(tried.changedRays[e]);
+    } else {
+      ++update.rowsReused;
+    }
+  }
+  logInfo("update: " + std::to_string(update.rowsReused) + " rows reused as they were, " +
+          std::to_string(update.rowsUpdated) + " updated ray by ray (" +
+          std::to_string(update.raysChanged) + " rays changed their hit; " +
+          std::to_string(update.raysTested) + " of their " + std::to_string(update.raysOfKeptRows) +
+          " rays made and tested, the others pointing away from the edit), " +
+          std::to_string(elements - update.rowsReused - update.rowsUpdated) + " cast again (" +
+          std::to_string(update.moved) + " moved or new, " +
+          std::to_string(update.rowsOtherChange) +
+          " with another exposed area or ray budget); in " + formatNumber(seconds) + " s");
+}
+
+// Rows: a kept row is brought up to date ray by ray when its element stayed put with the same
+// exposed area and ray budget; the others are cast again. Returns the new table, the kept rows
+// taken over renumbered with their changes merged in.
+KeptRowTable updateKeptRows(const KeptFactors& kept, const EditRegion& edit,
+                            const HemisphereFormFactors::Edit& casters,
+                            const std::vector<int>& rayMultipliers, const RadiosityProblem& problem,
+                            FormFactorStage& formFactors, SolveReport::Update& update) {
+  const auto t = Clock::now();
+  const KeptRowsTried tried =
+      tryKeptRows(kept, edit, casters, rayMultipliers, problem, formFactors, update);
+  countKeptRows(tried, problem.size(), secondsSince(t), update);
+  // Empty stand-ins for the rows taken over: they go from the kept table to the new one.
+  formFactors.adoptRows(std::vector<FormFactorRow>(static_cast<size_t>(problem.size())),
+                        tried.reuse);
+  return KeptRowTable(formFactors.takeAllRows(), kept.rows, tried.keptFrom, edit.newIndexOfOld,
+                      tried.changes);
+}
+
+// Gauss–Seidel or Jacobi from the previous solution (new elements from their emission):
+// unchanged where the edit changed nothing.
+void solveFromPrevious(const std::vector<Rgb>& previous, const std::vector<int>& match,
+                       const SolveOptions& options, KeptFactors& next,
+                       const IterationLimits& limits, Solution& solution, SolveReport& report) {
+  std::vector<Rgb> guess = solution.problem.emission;
+  for (size_t e = 0; e < match.size(); ++e)
+    if (match[e] >= 0) guess[e] = previous[static_cast<size_t>(match[e])];
+  KeptRows keptRows(next);
+  // The solver borrows the rows' matrix and gives it back for factors.bin (copying 35 million
+  // factors took seconds).
+  const std::unique_ptr<Solver> solver = makeSolver(options.solver, solution.problem, keptRows,
+                                                    [&] { return next.rows.lendMatrix(); });
+  auto* gathering = dynamic_cast<GatheringSolver*>(solver.get());
+  RAD_CHECK(gathering != nullptr);
+  gathering->startFrom(std::move(guess));
+  solveToLimits(*solver, limits, false, solution, report);  // gathering: no point values
+  next.rows.returnMatrix(gathering->releaseMatrix());
+}
+
 }  // namespace
 
 SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
@@ -168,10 +365,8 @@ UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
 
   Solution& solution = started.result.solution;
   SolveReport& report = started.result.report;
-  report.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
-  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                        static_cast<size_t>(report.threads));
-  auto t = Clock::now();
+  const ThreadLimit threads(options, report);
+  const auto t = Clock::now();
   solution.scene = loadScene(options.scenePath, options.lights, options.twoSided);
   report.times.load = secondsSince(t);
   checkSceneLimits(solution.scene);
@@ -187,203 +382,59 @@ UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
                          " lights, the kept solve had " + std::to_string(header.lightTypes.size()) +
                          ": update follows geometry edits; solve --keep-factors again");
 
-  t = Clock::now();
-  MeshedScene meshed = meshScene(solution.scene, options);
-  solution.mesh = std::move(meshed.mesh);
-  report.maxArea = meshed.maxArea;
-  report.elementSize = meshed.sizing.edge;
-  report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
-  report.elementsBeforeRefinement = solution.mesh->elementCount();
-  report.times.mesh = secondsSince(t);
+  meshStage(solution, options, report);
   return started;
 }
 
 SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std::string& keptPath,
                          const std::vector<Rgb>& previous,
                          const std::vector<uint64_t>* previousBuriedCells) {
-  const auto start = started.start;
   const SolveOptions& options = started.options;
-  if (previous.size() != kept.area.size() ||
-      (previousBuriedCells && previousBuriedCells->size() != kept.area.size()))
-    throw InputError(keptPath, 0,
-                     "the previous solution has " + std::to_string(previous.size()) +
-                         " elements, the kept factors " + std::to_string(kept.area.size()) +
-                         ": not the same solve");
-  if (kept.lightIrradiance.size() != started.result.solution.scene.lights.size())
-    throw InputError(keptPath, 0, "changed while it was read: run update again");
-  // A material turned two-sided or given a cut-out stops other rays with no geometry moved: no
-  // edit region would hold the change.
-  for (const auto& [name, visibility] : keptMaterialVisibility(started.result.solution.scene)) {
-    const auto was = kept.materialVisibility.find(name);
-    if (was != kept.materialVisibility.end() && was->second != visibility)
-      throw InputError(keptPath, 0,
-                       "material '" + name +
-                           "' stops rays differently than when this solve was kept (its "
-                           "two-sidedness, cut-out or kind changed): update follows geometry "
-                           "edits; solve --keep-factors again");
-  }
+  checkKeptSolveFits(kept, keptPath, previous, previousBuriedCells, started.result.solution.scene);
   SolveResult result = std::move(started.result);
   Solution& solution = result.solution;
   SolveReport& report = result.report;
-  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                        static_cast<size_t>(report.threads));
-  const PatchMesh& mesh = *solution.mesh;
-  const int n = mesh.elementCount();
-
-  // Which elements stayed put; the region of the edit: the moved or added elements where they
-  // are now, and the kept elements no longer there where they were.
-  const std::vector<int> match = matchElements(kept, mesh);
-  std::vector<int> newIndexOfOld(kept.area.size(), -1);
-  std::vector<char> moved(static_cast<size_t>(n), 0);
-  std::vector<std::array<Eigen::Vector3d, 3>> region, oldPlace;
-  for (int e = 0; e < n; ++e) {
-    if (match[static_cast<size_t>(e)] >= 0) {
-      newIndexOfOld[static_cast<size_t>(match[static_cast<size_t>(e)])] = e;
-    } else {
-      moved[static_cast<size_t>(e)] = 1;
-      region.push_back(mesh.corners(e));
-    }
-  }
   SolveReport::Update& update = report.update;
   update.keptFactors = keptPath;
-  update.moved = static_cast<int>(region.size());
-  for (size_t i = 0; i < newIndexOfOld.size(); ++i)
-    if (newIndexOfOld[i] < 0) {
-      region.push_back(kept.corners[i]);
-      oldPlace.push_back(kept.corners[i]);
-      ++update.removed;
-    }
-  logInfo("update: " + std::to_string(n) + " elements, " + std::to_string(update.moved) +
-          " moved or added, " + std::to_string(update.removed) + " moved or removed");
+  const ThreadLimit threads(options, report);
+  const PatchMesh& mesh = *solution.mesh;
+  const EditRegion edit = findEdit(kept, mesh, update);
 
   auto t = Clock::now();
   const RayCaster rays(mesh, solution.scene);
   report.times.bvh = secondsSince(t);
-  const double sceneSize = mesh.boundsDiagonal();
-  const TriangleSetCaster regionCaster(region, rays.centre(), sceneSize),
-      oldCaster(oldPlace, rays.centre(), sceneSize);
-  auto keptExposure = std::make_shared<const ElementExposure>(exposureTheEditLeaves(
-      options, mesh, rays, match, previousBuriedCells, regionCaster, update.buriedCellsKept));
-  const ElementExposure& exposure = *keptExposure;
-  solution.exposure = keptExposure;  // for elements.csv's buried cells, as a solve keeps them
-  report.exposureProbeRays = exposure.probeRays();
-  if (previousBuriedCells)
-    logInfo("buried cells: " + std::to_string(update.buriedCellsKept) + " of " + std::to_string(n) +
-            " elements kept from before the edit, " + std::to_string(exposure.probeRays()) +
-            " probe rays");
+  const TriangleSetCaster regionCaster(edit.region, rays.centre(), mesh.boundsDiagonal()),
+      oldCaster(edit.oldPlace, rays.centre(), mesh.boundsDiagonal());
+  solution.exposure = std::make_shared<const ElementExposure>(exposureTheEditLeaves(
+      options, mesh, rays, edit.match, previousBuriedCells, regionCaster, update.buriedCellsKept));
+  const ElementExposure& exposure = *solution.exposure;  // for elements.csv, as a solve keeps it
+  noteProbeRays(exposure, previousBuriedCells != nullptr, mesh.elementCount(), report);
   solution.problem = makeProblem(solution.scene, mesh, &exposure);
   // The lights' first shot: an element that stayed put, with the same exposed area, whose shadow
   // rays to a light cannot meet the edit keeps the E_d the kept solve computed.
   const std::vector<KnownIrradiance> knownDirect =
-      directLightTheEditLeaves(kept, solution, match, regionCaster);
+      directLightTheEditLeaves(kept, solution, edit.match, regionCaster);
   for (const KnownIrradiance& k : knownDirect)
     update.directLightKept += std::count(k.known.begin(), k.known.end(), 1);
   std::vector<int> rayMultipliers;
   std::shared_ptr<KeptFactors> next = keepLightsApart(
       solution, rays, options, exposure, report.elementSize, rayMultipliers, report, &knownDirect);
 
-  // Rows: a kept row is brought up to date ray by ray when its element stayed put with the same
-  // exposed area and ray budget; the others are cast again.
   FormFactorStage formFactors(solution.scene, mesh, rays, solution.problem, options, &exposure,
                               rayMultipliers);
-  const RayCaster withoutMoved(mesh, solution.scene, moved);
-  const HemisphereFormFactors::Edit edit{regionCaster, oldCaster, moved, withoutMoved};
-  std::vector<char> reuse(static_cast<size_t>(n), 0);
-  std::vector<int> changedRays(static_cast<size_t>(n), 0), raysTested(static_cast<size_t>(n), 0);
-  std::vector<int> keptFrom(static_cast<size_t>(n), -1);    // a row taken over: its kept index
-  std::vector<RowChanges> changes(static_cast<size_t>(n));  // and how its counts change
-  std::vector<FormFactorRow> rows(static_cast<size_t>(n));  // empty stand-ins for those
-  t = Clock::now();
-  std::vector<int> candidates;
-  for (int e = 0; e < n; ++e) {
-    const int old = match[static_cast<size_t>(e)];
-    if (old < 0) continue;
-    if (!sameArea(solution.problem.area[e], kept.area[static_cast<size_t>(old)]) ||
-        rayMultipliers[e] != kept.rayMultiplier[static_cast<size_t>(old)]) {
-      ++update.rowsOtherChange;
-      continue;
-    }
-    candidates.push_back(e);
-  }
-  uint64_t candidateRays = 0;
-  for (int e : candidates) candidateRays += formFactors.hemisphere().raysForRow(e);
-  Progress progress("rays of the kept rows examined", candidateRays, "rays");
-  tbb::parallel_for(
-      tbb::blocked_range<size_t>(0, candidates.size(), 16),
-      [&](const tbb::blocked_range<size_t>& range) {
-        for (size_t k = range.begin(); k != range.end(); ++k) {
-          const int e = candidates[k];
-          const int old = match[static_cast<size_t>(e)];
-          const KeptRowTable::RowView keptRow = kept.rows.view(static_cast<size_t>(old));
-          // Its factor to target t (new numbering): t's kept index in the kept row.
-          auto keptFactor = [&](int t) {
-            const int was = match[static_cast<size_t>(t)];
-            const int* end = keptRow.targets + keptRow.count;
-            const int* at = std::lower_bound(keptRow.targets, end, was);
-            return was >= 0 && at != end && *at == was ? keptRow.values[at - keptRow.targets] : 0.0;
-          };
-          if (formFactors.hemisphere().updateRow(e, keptFactor, keptRow.escaped,
-                                                 changes[static_cast<size_t>(e)], edit,
-                                                 changedRays[e], raysTested[e])) {
-            reuse[static_cast<size_t>(e)] = 1;
-            // The row goes from the kept table to the new one directly, its changes
-            // merged in; the stage holds an empty stand-in meanwhile.
-            keptFrom[static_cast<size_t>(e)] = old;
-          }
-          progress.advance(formFactors.hemisphere().raysForRow(e));
-        }
-      });
-  progress.finish(std::to_string(candidates.size()) + " rows");
-  update.raysOfKeptRows = candidateRays;
-  for (int e : candidates) {
-    update.raysTested += static_cast<uint64_t>(raysTested[e]);
-    if (!reuse[static_cast<size_t>(e)]) {
-      ++update.rowsOtherChange;  // a tie at float precision: cast again
-    } else if (changedRays[e] > 0) {
-      ++update.rowsUpdated;
-      update.raysChanged += static_cast<uint64_t>(changedRays[e]);
-    } else {
-      ++update.rowsReused;
-    }
-  }
-  const double testSeconds = secondsSince(t);
-  logInfo("update: " + std::to_string(update.rowsReused) + " rows reused as they were, " +
-          std::to_string(update.rowsUpdated) + " updated ray by ray (" +
-          std::to_string(update.raysChanged) + " rays changed their hit; " +
-          std::to_string(update.raysTested) + " of their " + std::to_string(update.raysOfKeptRows) +
-          " rays made and tested, the others pointing away from the edit), " +
-          std::to_string(n - update.rowsReused - update.rowsUpdated) + " cast again (" +
-          std::to_string(update.moved) + " moved or new, " +
-          std::to_string(update.rowsOtherChange) +
-          " with another exposed area or ray budget); in " + formatNumber(testSeconds) + " s");
-  formFactors.adoptRows(std::move(rows), reuse);
-  next->rows = KeptRowTable(formFactors.takeAllRows(), kept.rows, keptFrom, newIndexOfOld, changes);
+  const RayCaster withoutMoved(mesh, solution.scene, edit.moved);
+  next->rows = updateKeptRows(kept, edit, {regionCaster, oldCaster, edit.moved, withoutMoved},
+                              rayMultipliers, solution.problem, formFactors, update);
   next->fingerprint = keptFactorsFingerprint(solution.scene, options);
   next->options = options;
 
-  // Solve from the previous solution: unchanged where the edit changed nothing.
   t = Clock::now();
-  std::vector<Rgb> guess = solution.problem.emission;
-  for (int e = 0; e < n; ++e)
-    if (match[static_cast<size_t>(e)] >= 0) guess[e] = previous[match[static_cast<size_t>(e)]];
-  KeptRows keptRows(*next);
-  // The solver borrows the rows' matrix and gives it back for factors.bin (copying 35 million
-  // factors took seconds).
-  const std::unique_ptr<Solver> solver = makeSolver(options.solver, solution.problem, keptRows,
-                                                    [&] { return next->rows.lendMatrix(); });
-  auto* gathering = dynamic_cast<GatheringSolver*>(solver.get());
-  RAD_CHECK(gathering != nullptr);
-  gathering->startFrom(std::move(guess));
-  const IterationLimits limits = iterationLimits(options, n, start);
-  report.stoppedBy = iterate(*solver, limits);
-  report.converged = converged(report.stoppedBy);
-  solution.radiosity = solver->solution();
-  reportSolver(*solver, report);
-  next->rows.returnMatrix(gathering->releaseMatrix());
+  solveFromPrevious(previous, edit.match, options, *next,
+                    iterationLimits(options, mesh.elementCount(), started.start), solution, report);
   formFactors.report(report, options.solver);
-  report.shooters = n;
+  report.shooters = mesh.elementCount();
   report.times.solve = secondsSince(t);
-  report.times.total = secondsSince(start);
+  report.times.total = secondsSince(started.start);
   result.kept = std::move(next);
   return result;
 }

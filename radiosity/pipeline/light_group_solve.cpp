@@ -1,11 +1,14 @@
 #include "radiosity/pipeline/light_group_solve.h"
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 
+#include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/problem_setup.h"
-#include "radiosity/solvers/progressive_solver.h"
+#include "radiosity/pipeline/solver_results.h"
 #include "radiosity/solvers/solver_factory.h"
 
 namespace rad {
@@ -51,8 +54,7 @@ void solveLightGroups(std::vector<LightGroupProblem>& groups, FormFactorStage& f
                       const SolveOptions& options, const IterationLimits& limits,
                       Solution& solution, SolveReport& report) {
   const int n = solution.mesh->elementCount();
-  // B at the receiver points where the whole solve would keep them (keepSolution's rule).
-  const bool pointValues = formFactors.analytic() && options.receiverPoints == 3;
+  const bool pointValues = keepsPointValues(options);
   solution.layers.clear();
   report.iterations = 0;
   report.finalProgress = 0;
@@ -66,18 +68,16 @@ void solveLightGroups(std::vector<LightGroupProblem>& groups, FormFactorStage& f
         makeSolver(options.solver, g.problem, formFactors.shots(),
                    [&] { return formFactors.gatheringMatrix(); });
     const StopReason stopped = iterate(*solver, limits);
+    SolverResults results = readSolverResults(*solver, pointValues);
     LightLayer layer;
     layer.group = g.group;
-    layer.radiosity = solver->solution();
-    const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver.get());
-    if (shooting && pointValues) {
-      layer.pointRadiosity = shooting->pointSolution();
-      if (g.directLight) g.directLight->addPointVariation(g.problem, layer.pointRadiosity);
-    }
-    if (shooting) {
+    layer.radiosity = std::move(results.radiosity);
+    layer.pointRadiosity = std::move(results.pointRadiosity);
+    if (g.directLight && !layer.pointRadiosity.empty())
+      g.directLight->addPointVariation(g.problem, layer.pointRadiosity);
+    if (!results.unshot.empty()) {
       anyShooting = true;
-      const std::vector<Rgb> own = shooting->unshotPowerOfElements();
-      for (int e = 0; e < n; ++e) unshot[e] += own[e];
+      for (int e = 0; e < n; ++e) unshot[e] += results.unshot[e];
     }
     report.solverName = solver->name();
     report.progressMeasure = solver->progressMeasure();
@@ -105,6 +105,22 @@ void solveLightGroups(std::vector<LightGroupProblem>& groups, FormFactorStage& f
   for (const LightGroupProblem& g : groups)
     if (g.directLight) rays += g.directLight->raysCast();
   report.directLightRays = rays;
+}
+
+void solveByLightGroups(const SolveSetup& setup, Solution& solution, SolveReport& report) {
+  // One problem per light group over the same form factors; the whole is their sum.
+  std::vector<LightGroupProblem> groups = makeLightGroupProblems(
+      solution.scene, *solution.mesh, setup.rays, setup.options, &setup.exposure, solution.problem);
+  noteBlackElements(solution, report);
+  FormFactorStage formFactors(solution.scene, *solution.mesh, setup.rays, solution.problem,
+                              setup.options, &setup.exposure,
+                              lightGroupRayMultipliers(groups, solution.problem.area));
+  throwIfInterrupted();
+  const auto t = std::chrono::steady_clock::now();
+  solveLightGroups(groups, formFactors, setup.options, setup.limits, solution, report);
+  const double solveAndRows = secondsSince(t);
+  formFactors.report(report, setup.options.solver);
+  report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
 }
 
 }  // namespace rad

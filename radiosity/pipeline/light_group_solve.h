@@ -9,6 +9,7 @@
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_options.h"
+#include "radiosity/pipeline/solve_stages.h"
 #include "radiosity/scene/light_groups.h"
 #include "radiosity/solvers/radiosity_problem.h"
 #include "radiosity/visibility/element_exposure.h"
@@ -46,5 +47,10 @@ std::vector<int> lightGroupRayMultipliers(const std::vector<LightGroupProblem>& 
 void solveLightGroups(std::vector<LightGroupProblem>& groups, FormFactorStage& formFactors,
                       const SolveOptions& options, const IterationLimits& limits,
                       Solution& solution, SolveReport& report);
+
+// The light-groups strategy of solveScene (--light-groups): the groups' problems
+// (makeLightGroupProblems, instead of the one first shot), one FormFactorStage whose emitter rows
+// get lightGroupRayMultipliers, and solveLightGroups over it. No refinement.
+void solveByLightGroups(const SolveSetup& setup, Solution& solution, SolveReport& report);
 
 }  // namespace rad

@@ -1,39 +1,27 @@
 #include "radiosity/pipeline/relight.h"
 
-#include <tbb/global_control.h>
-#include <tbb/info.h>
-
 #include <chrono>
 
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
 #include "radiosity/pipeline/iteration.h"
-#include "radiosity/pipeline/mesh_stage.h"
+#include "radiosity/pipeline/kept_factors_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
+#include "radiosity/pipeline/solve_stages.h"
+#include "radiosity/pipeline/solver_results.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/scene/two_sided.h"
-#include "radiosity/solvers/progressive_solver.h"
 #include "radiosity/solvers/solver_factory.h"
 
 namespace rad {
 
-Scene loadKeptScene(const KeptFactors& kept) {
-  Scene scene = loadScene(kept.scenePath);  // with the scene's own lights (glTF), as solved
-  for (Light& light : findSceneLights(kept.scenePath, kept.lightInput, false))
-    scene.lights.push_back(std::move(light));
-  applyTwoSidedInput(scene, kept.options.twoSided);
-  addBackSides(scene);
-  return scene;
-}
+namespace {
 
-RelightStart startRelight(const KeptFactors& header, const std::string& keptPath, Scene scene,
-                          const SolveOptions& solverOptions) {
-  RelightStart started;
-  started.start = std::chrono::steady_clock::now();
-  started.options = withSolverOf(header.options, solverOptions);
-  const SolveOptions& options = started.options;
-  validateSolveOptions(options);
+// Refuses a scene that no longer fits the kept solve: other geometry or mesh options (the
+// fingerprint), or other lights, whose first shot is kept.
+void checkKeptSceneFits(const KeptFactors& header, const std::string& keptPath,
+                        const Scene& scene) {
   if (keptFactorsFingerprint(scene, header.options) != header.fingerprint)
     throw InputError(keptPath, 0,
                      "the scene " + header.scenePath +
@@ -54,23 +42,40 @@ RelightStart startRelight(const KeptFactors& header, const std::string& keptPath
                      "shape or strength in the lights file or the --sky/--sun options): relight "
                      "reuses their first shot; scale their strength with --override, or solve "
                      "again");
+}
+
+// The lights' first shot from the kept E_d: E += Σ_l ρ scale_l E_d,l, no ray cast.
+void addKeptFirstShot(const KeptFactors& kept, const std::vector<Rgb>& lightScale,
+                      RadiosityProblem& problem) {
+  for (size_t l = 0; l < kept.lightIrradiance.size(); ++l)
+    for (int e = 0; e < problem.size(); ++e)
+      problem.emission[e] += problem.reflectance[e] * lightScale[l] * kept.lightIrradiance[l][e];
+}
+
+}  // namespace
+
+Scene loadKeptScene(const KeptFactors& kept) {
+  Scene scene = loadScene(kept.scenePath);  // with the scene's own lights (glTF), as solved
+  for (Light& light : findSceneLights(kept.scenePath, kept.lightInput, false))
+    scene.lights.push_back(std::move(light));
+  applyTwoSidedInput(scene, kept.options.twoSided);
+  addBackSides(scene);
+  return scene;
+}
+
+RelightStart startRelight(const KeptFactors& header, const std::string& keptPath, Scene scene,
+                          const SolveOptions& solverOptions) {
+  RelightStart started;
+  started.start = std::chrono::steady_clock::now();
+  started.options = withSolverOf(header.options, solverOptions);
+  const SolveOptions& options = started.options;
+  validateSolveOptions(options);
+  checkKeptSceneFits(header, keptPath, scene);
   Solution& solution = started.result.solution;
   SolveReport& report = started.result.report;
-  report.threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
-  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                        static_cast<size_t>(report.threads));
+  const ThreadLimit threads(options, report);
   solution.scene = std::move(scene);
-  MeshedScene meshed = meshScene(solution.scene, options);
-  solution.mesh = std::move(meshed.mesh);
-  report.maxArea = meshed.maxArea;
-  report.elementSize = meshed.sizing.edge;
-  report.elementSizeRule = elementSizeRuleName(meshed.sizing.rule);
-  report.elementsBeforeRefinement = solution.mesh->elementCount();
-  logInfo(
-      "mesh: " + std::to_string(solution.mesh->elementCount()) + " elements in " +
-      formatNumber(
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - started.start).count()) +
-      " s");
+  meshStage(solution, options, report);
   // E and ρ from the materials as they are now (the lights' first shot is added from the kept
   // E_d when the rows are in).
   solution.problem = makeProblem(solution.scene, *solution.mesh, nullptr);
@@ -84,8 +89,7 @@ SolveResult finishRelight(RelightStart started, KeptFactors kept, const std::str
   SolveResult result = std::move(started.result);
   Solution& solution = result.solution;
   SolveReport& report = result.report;
-  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                        static_cast<size_t>(report.threads));
+  const ThreadLimit threads(options, report);
   const int n = solution.mesh->elementCount();
   if (n != static_cast<int>(kept.area.size()))
     throw InputError(keptPath, 0,
@@ -93,23 +97,15 @@ SolveResult finishRelight(RelightStart started, KeptFactors kept, const std::str
                          " elements, the kept factors hold " + std::to_string(kept.area.size()) +
                          ": solve again");
   solution.problem.area = kept.area;
-  for (size_t l = 0; l < kept.lightIrradiance.size(); ++l)
-    for (int e = 0; e < n; ++e)
-      solution.problem.emission[e] +=
-          solution.problem.reflectance[e] * lightScale[l] * kept.lightIrradiance[l][e];
+  addKeptFirstShot(kept, lightScale, solution.problem);
   if (!(solution.problem.emittedPower() > 0))
     throw InputError(keptPath, 0, "nothing emits after the overrides: no light to solve for");
 
   KeptRows rows(kept);
   const std::unique_ptr<Solver> solver =
       makeSolver(options.solver, solution.problem, rows, [&] { return kept.rows.takeMatrix(); });
-  const IterationLimits limits = iterationLimits(options, n, started.start);
-  report.stoppedBy = iterate(*solver, limits);
-  report.converged = converged(report.stoppedBy);
-  solution.radiosity = solver->solution();
-  if (const auto* shooting = dynamic_cast<const ProgressiveSolver*>(solver.get()))
-    solution.unshot = shooting->unshotPowerOfElements();
-  reportSolver(*solver, report);
+  solveToLimits(*solver, iterationLimits(options, n, started.start), keepsPointValues(options),
+                solution, report);
   report.shooters = n;
   report.relitFrom = keptPath;
   report.relitLightScale = lightScale;

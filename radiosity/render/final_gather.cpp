@@ -31,8 +31,8 @@ Rgb varianceOfMean(const Rgb& sum, const Rgb& squares, int n) {
 }
 
 // Shadow rays per element for its mean direct light (indirectFromSolution): the solve's own
-// first shot takes half its 1024 default links' rays (solve_pipeline.cpp); the mean's noise
-// enters the indirect part, so about as many.
+// first shot takes half its 1024 default links' rays (EmitterFirstShot::raysForSolve); the
+// mean's noise enters the indirect part, so about as many.
 constexpr int kMeanDirectRays = 512;
 
 // An interpolated indirect part may dip below 0 where noise put an element's below its direct
