@@ -67,6 +67,12 @@ INSTANTIATE_TEST_SUITE_P(
         Refusal{"render_path_mis",
                 "render " + kCornell + " --width 8 --height 8 --spp 1 --method path --mis power",
                 "--mis is not used: --mis applies to --method bdpt only"},
+        // The camera's thin-lens focus on a pinhole camera (the Cornell box's has lens radius 0).
+        Refusal{"render_pinhole_focus",
+                "render " + kCornell +
+                    " --width 8 --height 8 --spp 1 --method direct "
+                    "--focus-distance 2",
+                "--focus-distance is not used: the camera is a pinhole"},
         // compare: --gather when none of the methods gathers.
         Refusal{"compare_gather",
                 "compare " + kCornell +

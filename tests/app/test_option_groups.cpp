@@ -149,6 +149,12 @@ TEST(OptionGroups, TheCameraLookUpSuggestsOnlyTheOptionsTheCommandBinds) {
   EXPECT_EQ(camera.file, "");
   EXPECT_EQ(camera.camera.width, 12);
   EXPECT_EQ(camera.camera.position, Eigen::Vector3d(0, 0, 1));
+  // A focus distance needs a lens: on a pinhole it is refused, with a lens radius it applies.
+  all.focusDistance = 2;
+  EXPECT_NE(inputError([&] { resolveCamera(all, scene); }).find("--focus-distance is not used"),
+            std::string::npos);
+  all.lensRadius = 0.01;
+  EXPECT_EQ(resolveCamera(all, scene).camera.focusDistance, 2);
 }
 
 TEST(OptionGroups, ThreadsZeroMeansEveryHardwareThread) {

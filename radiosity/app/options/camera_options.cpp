@@ -56,6 +56,10 @@ ResolvedCamera resolveCamera(const CameraOptions& o, const std::string& scenePat
   if (o.height) camera.height = *o.height;
   if (o.lensRadius) camera.lensRadius = *o.lensRadius;
   if (o.focusDistance) camera.focusDistance = *o.focusDistance;
+  if (o.focusDistance && !(camera.lensRadius > 0))
+    throw InputError(
+        "--focus-distance is not used: the camera is a pinhole (lens radius 0); a thin lens "
+        "needs --lens-radius");
   const std::string file = !source.empty() ? source : sceneCamera ? scenePath : "";
   validateCamera(camera,
                  file.empty() ? "command line camera" : file + " (with command-line overrides)");

@@ -31,7 +31,7 @@ struct ResolvedCamera {
 };
 
 // The camera for `scenePath`, checked (validateCamera); InputError naming the scene when there is
-// none, or naming the file when it is bad.
+// none, naming the file when it is bad, and for --focus-distance on a pinhole camera.
 ResolvedCamera resolveCamera(const CameraOptions& options, const std::string& scenePath);
 
 }  // namespace rad
