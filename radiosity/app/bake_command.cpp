@@ -635,7 +635,7 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
   CLI::App* bake =
       app.add_subcommand("bake", "Solve, then bake a lightmap atlas and glTF/OBJ/PLY exports");
   bake->add_option("scene", o->solve.scenePath,
-                   std::string(kSceneFileHelp) + " (materials from its MTL or glTF)")
+                   std::string(kSceneFileHelp) + "; materials from its MTL or glTF")
       ->required();
   bake->add_option("--out", o->solve.outputDir, "Output directory (created if missing)")
       ->required();

@@ -64,7 +64,7 @@ void registerSolveCommand(CLI::App& app, CommandAction& run) {
   CLI::App* solve = app.add_subcommand("solve", "Solve the diffuse radiosity of a scene");
   solve
       ->add_option("scene", options->scenePath,
-                   std::string(kSceneFileHelp) + " (materials from its MTL or glTF)")
+                   std::string(kSceneFileHelp) + "; materials from its MTL or glTF")
       ->required();
   solve->add_option("--out", options->outputDir, "Output directory (created if missing)")
       ->required();
