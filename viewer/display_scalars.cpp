@@ -38,11 +38,17 @@ const DisplayScalarInfo& displayScalarInfo(DisplayScalar scalar) {
   return infos[static_cast<int>(scalar)];
 }
 
+std::string displayScalarNames() {
+  std::string names;
+  for (const DisplayScalarInfo& info : infos)
+    names += (names.empty() ? "" : " | ") + std::string(info.key);
+  return names;
+}
+
 DisplayScalar parseDisplayScalar(const std::string& key) {
   for (int i = 0; i < displayScalarCount; ++i)
     if (key == infos[i].key) return static_cast<DisplayScalar>(i);
-  throw InputError("unknown --scalar '" + key +
-                   "' (expected colour, radiance, B_r, B_g, B_b, unshot, area, level or patch)");
+  throw InputError("unknown --scalar '" + key + "' (expected " + displayScalarNames() + ")");
 }
 
 std::vector<double> cellScalars(vtkPolyData* solution, DisplayScalar scalar) {

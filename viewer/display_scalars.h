@@ -34,6 +34,8 @@ const DisplayScalarInfo& displayScalarInfo(DisplayScalar scalar);
 // "colour", "radiance", "B_r", "B_g", "B_b", "unshot", "area", "level", "patch"; InputError
 // otherwise.
 DisplayScalar parseDisplayScalar(const std::string& key);
+// "colour | radiance | ... | patch": the keys of the one table, for --help and errors.
+std::string displayScalarNames();
 
 // Per-cell values of a solution PolyData for a scalar (Colour: the radiance's luminance).
 std::vector<double> cellScalars(vtkPolyData* solution, DisplayScalar scalar);

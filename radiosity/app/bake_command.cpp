@@ -1,9 +1,6 @@
 // `radiosity bake SCENE.obj --out DIR`: the solution baked into a lightmap atlas and into exports
 // that game engines and DCC tools load (glTF binary, OBJ + MTL, PLY vertex colours). The bake
 // itself is radiosity::bake (bakeSolution); here are its options and the writing of its files.
-#include <tbb/global_control.h>
-#include <tbb/info.h>
-
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -14,6 +11,10 @@
 
 #include "radiosity/app/baked_materials.h"
 #include "radiosity/app/commands.h"
+#include "radiosity/app/options/exposure_option.h"
+#include "radiosity/app/options/gather_options.h"
+#include "radiosity/app/options/option_rules.h"
+#include "radiosity/app/options/solve_option_group.h"
 #include "radiosity/bake/bake_files.h"
 #include "radiosity/bake/bake_solution.h"
 #include "radiosity/core/atomic_file.h"
@@ -29,6 +30,7 @@
 #include "radiosity/output/obj_export.h"
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/pipeline/solution_source.h"
+#include "radiosity/pipeline/thread_limit.h"
 #include "radiosity/scene/lightmap_uv_check.h"
 #include "radiosity/scene/scene_loader.h"
 
@@ -37,7 +39,6 @@ namespace {
 
 struct BakeOptions {
   SolveOptions solve;
-  std::string solverName = "progressive";
   double texelSize = 0;     // --texel-size, scene units per texel; 0: not given
   double texelDensity = 0;  // --texel-density, texels per scene unit; 0: not given
   int lightmapSize = 0;     // --lightmap-size; 0: not given
@@ -45,30 +46,53 @@ struct BakeOptions {
   int dilation = -1;  // -1: the padding
   double chartAngle = 30;
   bool noLightmap = false;
-  bool sceneUvs = false;           // bake into the scene's own texture coordinates
-  int gather = 0;                  // per-texel final gather rays; 0: interpolate the solution
-  int lightRays = 0;               // per-texel shadow rays of the gather; 0: as many as gather
-  std::string solutionDir;         // --solution: reuse the solution `solve` saved there
-  std::optional<double> exposure;  // --exposure: fixed instead of automatic
+  bool sceneUvs = false;  // bake into the scene's own texture coordinates
+  // Per texel: --gather, --light-rays; none: the solution interpolated.
+  FinalGatherOptions gather = {0, 0};
+  std::string solutionDir;  // --solution: reuse the solution `solve` saved there
+  ExposureOption exposure;  // --exposure: fixed instead of automatic
   LightmapContent content = LightmapContent::Radiance;  // --lightmap-content
   bool directional = false;  // --directional: L1 SH texels beside the lightmap
   int directionalRays = 64;  // --directional-rays: hemisphere rays per texel
 };
 
-// --directional's rules, before anything is solved or written.
-void checkDirectionalOptions(const CLI::App& command, const BakeOptions& o) {
+// What only the lightmap reads: with --no-lightmap (vertex colours only), an error when given.
+// (--use-scene-uvs and --chart-angle exclude --no-lightmap on the command line, --directional
+// has its own rule below.)
+const char* const kLightmapOnlyOptions[] = {"--texel-size", "--texel-density",   "--lightmap-size",
+                                            "--padding",    "--dilation",        "--gather",
+                                            "--light-rays", "--lightmap-content"};
+
+// Every bake option the chosen mode does not use, given, is an error saying why; so are values
+// that cannot work together. Before anything is solved or written. Sets --dilation's default.
+void checkBakeOptions(const CLI::App& command, BakeOptions& o) {
+  finishSolveOptions(command, o.solve);
+  o.exposure.check();
+  checkGatherOptions(o.gather);
+  if (o.noLightmap)
+    for (const char* name : kLightmapOnlyOptions)
+      refuseIfGiven(command, name, "--no-lightmap bakes vertex colours only, no lightmap");
   if (command.count("--directional-rays") > 0 && !o.directional)
     throw InputError(
         "--directional-rays sets the rays of --directional's texels: add --directional");
-  if (!o.directional) return;
-  if (o.noLightmap)
+  if (o.directional && o.noLightmap)
     throw InputError(
         "--directional with --no-lightmap: the directional texels are lightmap pages beside "
         "lightmap.exr; drop --no-lightmap");
-  if (o.solve.lightGroups)
+  if (o.directional && o.solve.lightGroups)
     throw InputError(
         "--directional with --light-groups: the directional texels hold the whole scene's light, "
         "not one layer per group; bake the groups and the directional lightmap separately");
+  if (o.solve.lightGroups && o.gather.castsRays())
+    throw InputError(
+        "--gather with --light-groups: the per-texel gather samples every light at once, so it "
+        "cannot split its direct light into the groups; bake the layers without --gather (or "
+        "refine the mesh with --element-size for sharper shadows)");
+  if (o.dilation < 0) o.dilation = o.padding;
+  if (o.dilation > o.padding)
+    throw InputError("--dilation " + std::to_string(o.dilation) + " exceeds --padding " +
+                     std::to_string(o.padding) +
+                     ": dilated texels of neighbouring charts would meet");
 }
 
 // What the bake makes of the solution, from the options checked by runBake.
@@ -79,12 +103,11 @@ BakeSpec bakeSpec(const BakeOptions& o) {
   spec.lightmap = !o.noLightmap;
   spec.dilation = o.dilation;
   spec.gather = o.gather;
-  spec.lightRays = o.lightRays;
   spec.content = o.content;
   spec.directional = o.directional;
   spec.directionalRays = o.directionalRays;
   spec.seed = o.solve.seed;
-  spec.exposure = o.exposure;
+  spec.exposure = o.exposure.value();
   return spec;
 }
 
@@ -233,23 +256,10 @@ void writeBakeFiles(const Solution& solution, BakeResult& baked, const BakeOptio
 }
 
 void runBake(const CLI::App& command, BakeOptions& o) {
-  finishSolveOptions(command, o.solve, o.solverName);
-  if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
-  checkDirectionalOptions(command, o);
-  if (o.solve.lightGroups && (o.gather > 0 || o.lightRays > 0))
-    throw InputError(
-        "--gather with --light-groups: the per-texel gather samples every light at once, so it "
-        "cannot split its direct light into the groups; bake the layers without --gather (or "
-        "refine the mesh with --element-size for sharper shadows)");
-  if (o.dilation < 0) o.dilation = o.padding;
-  if (o.dilation > o.padding)
-    throw InputError("--dilation " + std::to_string(o.dilation) + " exceeds --padding " +
-                     std::to_string(o.padding) +
-                     ": dilated texels of neighbouring charts would meet");
+  checkBakeOptions(command, o);
   // --threads caps the whole bake (gather, rasterising, EXR compression), not the solve alone.
-  const int threads = o.solve.threads > 0 ? o.solve.threads : tbb::info::default_concurrency();
-  const tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                        static_cast<size_t>(threads));
+  const ThreadLimit threadLimit(o.solve.threads);
+  const int threads = threadLimit.threads();
   // The scene's UVs are checked before the solve, so a bad layout fails in seconds.
   const auto loadStart = std::chrono::steady_clock::now();
   Scene scene = loadScene(o.solve.scenePath, o.solve.lights, o.solve.twoSided);
@@ -278,11 +288,12 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
   auto o = std::make_shared<BakeOptions>();
   CLI::App* bake =
       app.add_subcommand("bake", "Solve, then bake a lightmap atlas and glTF/OBJ/PLY exports");
-  bake->add_option("scene", o->solve.scenePath, "OBJ scene file (materials from its MTL)")
+  bake->add_option("scene", o->solve.scenePath,
+                   std::string(kSceneFileHelp) + "; materials from its MTL or glTF")
       ->required();
   bake->add_option("--out", o->solve.outputDir, "Output directory (created if missing)")
       ->required();
-  addSolveOptions(*bake, o->solve, o->solverName);
+  addSolveOptions(*bake, o->solve);
   auto* texel = bake->add_option("--texel-size", o->texelSize,
                                  "Lightmap texel size in scene units (pages grow to fit)")
                     ->check(CLI::PositiveNumber);
@@ -304,18 +315,7 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
   bake->add_option("--dilation", o->dilation,
                    "Rings of texels filled around each chart (default: --padding)")
       ->check(CLI::Range(0, 64));
-  bake->add_option("--gather", o->gather,
-                   "Per-texel final gather with N rays (and N shadow rays) for sharp shadows; 0: "
-                   "interpolate the solution")
-      ->default_val(0)
-      ->check(CLI::NonNegativeNumber);
-  bake->add_option("--light-rays", o->lightRays,
-                   "Shadow rays to the emitters per texel of the --gather, MIS-weighted against "
-                   "the gather rays by their counts; 0: as many as --gather; with --gather 0: "
-                   "the direct light per texel by these rays alone, the indirect light "
-                   "interpolated from the solution")
-      ->default_val(0)
-      ->check(CLI::NonNegativeNumber);
+  addGatherOptions(*bake, o->gather, "texel (over its footprint, for sharp shadows)");
   auto* angle = bake->add_option("--chart-angle", o->chartAngle,
                                  "Largest normal angle within one chart, degrees")
                     ->default_val(o->chartAngle)
@@ -328,19 +328,14 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
                  "without overlaps) instead of generating lightmap UVs; charts are its UV islands")
       ->excludes(angle)
       ->excludes(noLightmap);
-  bake->add_option("--exposure", o->exposure,
-                   "Exposure of the 8-bit outputs (lightmap.png, vertex colours, the glTF): "
-                   "display = clamp(exposure × radiance); default: the 99th percentile of the lit "
-                   "surfaces' radiance maps to 1 (emitters excluded)");
-  bake->add_option("--lightmap-content", o->content,
-                   "What the lightmap holds: 'radiance' (outgoing, textures included: display as "
-                   "is) or 'irradiance' (incident light / pi without the surface's albedo, for "
-                   "engines that multiply it by the base colour; 0 where the reflectance is 0)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, LightmapContent>{{"radiance", LightmapContent::Radiance},
-                                                 {"irradiance", LightmapContent::Irradiance}},
-          CLI::ignore_case))
-      ->default_str("radiance");
+  o->exposure.add(*bake,
+                  "Exposure of the 8-bit outputs (lightmap.png, vertex colours, the glTF): "
+                  "display = clamp(exposure × radiance); default: the 99th percentile of the lit "
+                  "surfaces' radiance maps to 1 (emitters excluded)");
+  addChoiceOption(*bake, "--lightmap-content", o->content, lightmapContentTable(),
+                  "What the lightmap holds: radiance (outgoing, textures included: display as "
+                  "is) or irradiance (incident light / pi without the surface's albedo, for "
+                  "engines that multiply it by the base colour; 0 where the reflectance is 0)");
   bake->add_flag("--light-groups", o->solve.lightGroups,
                  "One layer per light group (each emissive material; each light, or the lights "
                  "file's \"group\"; --sky, --sun): group_NAME_lightmap.exr/.png and "

@@ -1,9 +1,6 @@
 // `radiosity compare SCENE.obj --out DIR`: every render method of render_methods.h from the same
 // camera, scene and BVH, each written as <method>.exr, and a labelled contact sheet compare.png
 // (method, the Heckbert paths it captures, samples, time) with compare.json.
-#include <tbb/global_control.h>
-#include <tbb/info.h>
-
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -12,6 +9,11 @@
 #include <sstream>
 
 #include "radiosity/app/commands.h"
+#include "radiosity/app/options/camera_options.h"
+#include "radiosity/app/options/exposure_option.h"
+#include "radiosity/app/options/gather_options.h"
+#include "radiosity/app/options/option_rules.h"
+#include "radiosity/app/options/solve_option_group.h"
 #include "radiosity/app/render_world.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
@@ -19,6 +21,7 @@
 #include "radiosity/core/log.h"
 #include "radiosity/output/contact_sheet.h"
 #include "radiosity/output/image_io.h"
+#include "radiosity/pipeline/thread_limit.h"
 #include "radiosity/render/camera.h"
 #include "radiosity/render/exposure_weights.h"
 #include "radiosity/render/image_renderer.h"
@@ -29,14 +32,12 @@ namespace {
 
 struct CompareOptions {
   SolveOptions solve;
-  std::string solverName = "progressive";
-  std::vector<std::string> methods;  // empty: every method
-  int spp = 0;                       // 0: each method's default
-  int gather = kRenderGather;
+  std::vector<std::string> methods;                // empty: every method
+  int spp = 0;                                     // 0: each method's default
+  FinalGatherOptions gather = {kRenderGather, 0};  // radiosity's --gather (as many shadow rays)
   int columns = 3;
-  std::string cameraFile;
-  std::optional<int> width, height;
-  std::optional<double> exposure;
+  CameraOptions camera;  // --camera, --width, --height
+  ExposureOption exposure;
 };
 
 struct MethodResult {
@@ -55,10 +56,9 @@ std::string formatSeconds(double s) {
 
 void runCompare(const CLI::App& command, CompareOptions& o) {
   // Check everything that can be wrong before any long work.
-  if (o.spp < 0) throw InputError("--spp must be >= 1");
-  if (o.gather < 0) throw InputError("--gather must be >= 0");
+  checkGatherOptions(o.gather);
   if (o.columns < 1) throw InputError("--columns must be >= 1");
-  if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
+  o.exposure.check();
   std::vector<const RenderMethod*> methods;
   if (o.methods.empty()) {
     for (const RenderMethod& m : renderMethods()) methods.push_back(&m);
@@ -72,30 +72,20 @@ void runCompare(const CLI::App& command, CompareOptions& o) {
   }
   bool solves = false;
   for (const RenderMethod* m : methods) solves = solves || m->needsSolve;
-  finishSolveOptions(command, o.solve, o.solverName,
-                     solves ? "" : "none of the --methods solves radiosity");
-  std::string source = o.cameraFile;
-  std::optional<Camera> sceneCamera;  // a glTF scene's own camera, when there is no sidecar
-  if (source.empty()) {
-    source = cameraSidecarPath(o.solve.scenePath);
-    if (!std::filesystem::exists(source)) {
-      sceneCamera = findSceneCamera(o.solve.scenePath);
-      if (!sceneCamera)
-        throw InputError(o.solve.scenePath, 0,
-                         "no camera: write " + source + " or pass --camera FILE");
-      source.clear();  // no camera file: nothing to read motion blur from
-    }
+  if (solves) {
+    finishSolveOptions(command, o.solve);
+  } else {
+    const std::string why = "none of the --methods solves radiosity";
+    refuseGatherOptions(command, why + ": there is no solution to gather from");
+    finishWithoutSolve(command, o.solve, why);
   }
-  Camera camera = sceneCamera ? *sceneCamera : loadCamera(source);
-  if (o.width) camera.width = *o.width;
-  if (o.height) camera.height = *o.height;
-  validateCamera(camera,
-                 (source.empty() ? o.solve.scenePath : source) + " (with command-line overrides)");
+  const ResolvedCamera resolved = resolveCamera(o.camera, o.solve.scenePath);
+  const Camera& camera = resolved.camera;
+  const std::string& source = resolved.file;
   RenderWorld world(o.solve, source);
 
-  const int threads = o.solve.threads > 0 ? o.solve.threads : tbb::info::default_concurrency();
-  tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                  static_cast<size_t>(threads));
+  const ThreadLimit threadLimit(o.solve.threads);
+  const int threads = threadLimit.threads();
 
   // The motion description is checked against the scene before the first render.
   for (const RenderMethod* method : methods)
@@ -127,11 +117,10 @@ void runCompare(const CLI::App& command, CompareOptions& o) {
   for (const MethodResult& r : results)
     if (r.method->name == "path") reference = &r;
   // Auto exposure from the lit surfaces in view: emitter and sky pixels do not set it.
-  const ToneMap toneMap =
-      o.exposure ? ToneMap{*o.exposure}
-                 : ToneMap::autoExposure(
-                       reference->render.image.pixels,
-                       exposureWeights(camera, *world.viewFor(*reference->method).scene));
+  const ToneMap toneMap = o.exposure.toneMap([&] {
+    return ToneMap::autoExposure(reference->render.image.pixels,
+                                 exposureWeights(camera, *world.viewFor(*reference->method).scene));
+  });
   std::vector<SheetTile> tiles;
   for (const MethodResult& r : results) {
     // Short lines, so that the font can be doubled on modest tiles; a method's time includes
@@ -195,7 +184,8 @@ void registerCompareCommand(CLI::App& app, CommandAction& run) {
   auto o = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand(
       "compare", "Render the scene with every method and write a labelled contact sheet");
-  cmd->add_option("scene", o->solve.scenePath, "OBJ scene file; camera from <scene>.camera.json")
+  cmd->add_option("scene", o->solve.scenePath,
+                  std::string(kSceneFileHelp) + "; camera from <scene>.camera.json")
       ->required();
   cmd->add_option("--out", o->solve.outputDir,
                   "Output directory for compare.png, compare.json and <method>.exr")
@@ -205,16 +195,13 @@ void registerCompareCommand(CLI::App& app, CommandAction& run) {
       ->delimiter(',');
   cmd->add_option("--spp", o->spp, "Samples per pixel for every method (default: each method's)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--gather", o->gather, "Final-gather rays per diffuse eye hit (radiosity)")
-      ->default_val(o->gather);
+  addGatherRaysOption(*cmd, o->gather, "diffuse eye hit (radiosity)");
   cmd->add_option("--columns", o->columns, "Tiles per row of the contact sheet")
       ->default_val(o->columns);
-  cmd->add_option("--camera", o->cameraFile, "Camera JSON file (default: <scene>.camera.json)");
-  cmd->add_option("--width", o->width, "Image width in pixels");
-  cmd->add_option("--height", o->height, "Image height in pixels");
-  cmd->add_option("--exposure", o->exposure,
+  addCameraOptions(*cmd, o->camera, CameraOverrides::SizeOnly);
+  o->exposure.add(*cmd,
                   "Exposure of every tile (default: the path tracer's 99th percentile maps to 1)");
-  addSolveOptions(*cmd, o->solve, o->solverName);
+  addSolveOptions(*cmd, o->solve);
   addCommonFlags(*cmd);
   cmd->callback([&run, cmd, o] { run = [cmd, o] { runCompare(*cmd, *o); }; });
 }

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "radiosity/app/commands.h"
+#include "radiosity/app/options/option_rules.h"
 #include "radiosity/app/solve_outputs.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
@@ -110,8 +111,7 @@ void registerRelightCommand(CLI::App& app, CommandAction& run) {
   relight->add_option("--tolerance", o->tolerance,
                       "Relative tolerance (default: the kept solve's)");
   relight->add_option("--max-iterations", o->maxIterations, "Iteration budget (0: the default)");
-  relight->add_option("--threads", o->threads, "Worker threads (0: all cores)")
-      ->check(CLI::NonNegativeNumber);
+  addThreadsOption(*relight, o->threads);
   addCommonFlags(*relight);
   relight->callback([&run, o] { run = [o] { runRelight(*o); }; });
 }

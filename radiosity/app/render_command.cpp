@@ -1,8 +1,5 @@
 // `radiosity render SCENE.obj --out DIR`: images from the scene's camera by one of the methods of
 // render_methods.h (final gather over the radiosity solution, path tracing, the classic ones).
-#include <tbb/global_control.h>
-#include <tbb/info.h>
-
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -11,6 +8,11 @@
 #include <optional>
 
 #include "radiosity/app/commands.h"
+#include "radiosity/app/options/camera_options.h"
+#include "radiosity/app/options/exposure_option.h"
+#include "radiosity/app/options/gather_options.h"
+#include "radiosity/app/options/option_rules.h"
+#include "radiosity/app/options/solve_option_group.h"
 #include "radiosity/app/render_world.h"
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/errors.h"
@@ -19,6 +21,7 @@
 #include "radiosity/core/seconds_since.h"
 #include "radiosity/output/image_io.h"
 #include "radiosity/pipeline/saved_solution.h"
+#include "radiosity/pipeline/thread_limit.h"
 #include "radiosity/render/camera.h"
 #include "radiosity/render/exposure_weights.h"
 #include "radiosity/render/final_gather.h"
@@ -34,24 +37,18 @@ using Clock = std::chrono::steady_clock;
 
 struct RenderCommandOptions {
   SolveOptions solve;
-  std::string solverName = "progressive";
   std::string method = "radiosity";
-  int gather = kRenderGather;
-  int lightRays = 0;      // 0: as many as gather
-  int spp = 0;            // 0: the method's default
+  FinalGatherOptions gather = {kRenderGather, 0};  // radiosity: --gather, --light-rays
+  int spp = 0;                                     // 0: the method's default
   bool adaptive = false;  // --adaptive: spp is the mean, shared out by the pixels' spread
-  std::string cameraFile;
-  std::vector<double> position, lookAt, up;
-  std::optional<double> vfov, lensRadius, focusDistance, exposure;
-  std::optional<int> width, height;
+  CameraOptions camera;
+  ExposureOption exposure;
   bool freshSolve = false;             // solve even when --out holds a reusable solution
   std::string solutionDir;             // --solution: reuse the solution `solve` saved there
   std::string paths;                   // --paths: Heckbert expression (path, bdpt)
   std::optional<int> bouncesSeparate;  // --bounces-separate K
-  std::string mis = "power";           // --mis (bdpt)
+  std::string mis = "power";           // --mis (bdpt), a name of misHeuristicTable()
 };
-
-Eigen::Vector3d toVector(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
 // render.json's `adaptive`: null for a uniform render; else the samples taken per pixel.
 nlohmann::json adaptiveReport(const RenderOutput& render, int spp, bool asked) {
@@ -67,99 +64,84 @@ nlohmann::json adaptiveReport(const RenderOutput& render, int spp, bool asked) {
           {"min_spp", *std::min_element(render.samples.begin(), render.samples.end())}};
 }
 
-// The camera from --camera, the scene's sidecar, the scene's own (glTF) or the command line;
-// `source` gets the file it came from ("" for none), which also holds the motion-blur fields.
-Camera resolveCamera(const RenderCommandOptions& o, std::string& source) {
-  Camera camera;
-  source = o.cameraFile;
-  if (source.empty()) {
-    const std::string sidecar = cameraSidecarPath(o.solve.scenePath);
-    if (std::filesystem::exists(sidecar)) source = sidecar;
-  }
-  std::optional<Camera> sceneCamera;  // a glTF scene's own camera, when there is no sidecar
-  if (source.empty()) sceneCamera = findSceneCamera(o.solve.scenePath);
-  if (!source.empty()) {
-    camera = loadCamera(source);
-  } else if (sceneCamera) {
-    camera = *sceneCamera;
-  } else if (o.position.empty() || o.lookAt.empty()) {
-    throw InputError(o.solve.scenePath, 0,
-                     "no camera: write " + cameraSidecarPath(o.solve.scenePath) +
-                         " or pass --camera FILE, or --position and --look-at");
-  }
-  if (!o.position.empty()) camera.position = toVector(o.position);
-  if (!o.lookAt.empty()) camera.lookAt = toVector(o.lookAt);
-  if (!o.up.empty()) camera.up = toVector(o.up);
-  if (o.vfov) camera.vfovDegrees = *o.vfov;
-  if (o.width) camera.width = *o.width;
-  if (o.height) camera.height = *o.height;
-  if (o.lensRadius) camera.lensRadius = *o.lensRadius;
-  if (o.focusDistance) camera.focusDistance = *o.focusDistance;
-  validateCamera(
-      camera, source.empty() ? "command line camera" : source + " (with command-line overrides)");
-  return camera;
-}
-
 nlohmann::json vectorJson(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-// Options of the path-type and Neumann-term images that cannot work together.
-void checkPathOptions(const RenderCommandOptions& o) {
-  const bool pathMethod = o.method == "path" || o.method == "bdpt";
-  if (!o.paths.empty() && !pathMethod)
-    throw InputError("--paths needs --method path or bdpt (--method " + o.method +
+// The methods that follow whole light paths per pixel (the path renderer): they bin paths by
+// type or bounce (--paths, --bounces-separate), and have no per-pixel second pass (--adaptive).
+bool followsWholePaths(const RenderMethod& method) {
+  return method.name == "path" || method.name == "bdpt";
+}
+
+// Every option render's method does not use, given, is an error saying why; so are values no
+// method can use. For --method radiosity --bounces-separate K, the solve becomes Jacobi's K
+// bounces (its iterates are the Neumann terms). Before any long work.
+void checkRenderOptions(const CLI::App& command, RenderCommandOptions& o,
+                        const RenderMethod& method) {
+  const std::string byMethod = "--method " + method.name;
+  const bool wholePaths = followsWholePaths(method);
+  if (wasGiven(command, "--paths") && !wholePaths)
+    throw InputError("--paths needs --method path or bdpt (" + byMethod +
                      " does not follow light paths one by one)");
-  if (o.bouncesSeparate && !pathMethod && o.method != "radiosity")
-    throw InputError("--bounces-separate needs --method path, bdpt or radiosity (--method " +
-                     o.method + " does not sum a Neumann series)");
+  if (o.bouncesSeparate && !wholePaths && !method.needsSolve)
+    throw InputError("--bounces-separate needs --method path, bdpt or radiosity (" + byMethod +
+                     " does not sum a Neumann series)");
   if (o.bouncesSeparate && *o.bouncesSeparate < 0)
     throw InputError("--bounces-separate must be >= 0 (the highest Neumann term to write)");
-  if (!o.paths.empty() && o.bouncesSeparate)
+  if (wasGiven(command, "--paths") && o.bouncesSeparate)
     throw InputError("--paths and --bounces-separate cannot be combined: give one of them");
-  if (o.mis != "power" && o.mis != "balance")
-    throw InputError("unknown --mis '" + o.mis + "' (expected power or balance)");
-  if (o.mis != "power" && o.method != "bdpt")
-    throw InputError("--mis applies to --method bdpt only");
-  if (o.bouncesSeparate && o.method == "radiosity" && o.solverName != "progressive" &&
-      o.solverName != "jacobi")
-    throw InputError(
-        "--bounces-separate with --method radiosity runs --solver jacobi (its iterates "
-        "are the Neumann terms); --solver " +
-        o.solverName + " cannot give them");
-  if (o.bouncesSeparate && o.solve.bounces >= 0)
+  parseName(misHeuristicTable(), o.mis, "--mis");
+  if (method.name != "bdpt")
+    refuseIfGiven(command, "--mis",
+                  "--mis applies to --method bdpt only (it weighs the ways bdpt joins eye and "
+                  "light sub-paths)");
+  if (wasGiven(command, "--adaptive") && wholePaths)
+    throw InputError("--adaptive: " + byMethod +
+                     " is not sampled adaptively; use it with radiosity, direct, whitted or "
+                     "distribution");
+  checkGatherOptions(o.gather);
+  o.exposure.check();
+  if (o.bouncesSeparate && wasGiven(command, "--bounces"))
     throw InputError("--bounces-separate K sets the Jacobi bounces itself: leave out --bounces");
+  if (!method.needsSolve) {
+    const std::string why = byMethod + " does not solve radiosity";
+    refuseGatherOptions(command, why + ": there is no solution to gather from");
+    for (const char* name : {"--solution", "--fresh-solve"}) refuseIfGiven(command, name, why);
+    finishWithoutSolve(command, o.solve, why);
+    return;
+  }
+  if (o.bouncesSeparate) {
+    // The Neumann terms are the Jacobi iterates: B_k − B_{k−1} = (ρF)^k E.
+    if (wasGiven(command, "--solver") && o.solve.solver != SolverKind::Jacobi)
+      throw InputError(
+          "--bounces-separate with --method radiosity runs --solver jacobi (its iterates "
+          "are the Neumann terms); --solver " +
+          solverKindName(o.solve.solver) + " cannot give them");
+    o.solve.solver = SolverKind::Jacobi;
+    o.solve.bounces = *o.bouncesSeparate;
+    o.solve.keepBounceTerms = true;
+  }
+  finishSolveOptions(command, o.solve);
 }
 
 void runRender(const CLI::App& command, RenderCommandOptions& o) {
   const auto start = Clock::now();
   const RenderMethod& method = findRenderMethod(o.method);
-  checkPathOptions(o);
+  checkRenderOptions(command, o, method);
   // The path expression is parsed before any long work: a malformed one fails at once.
   std::optional<ExpressionBinning> pathFilter;
   if (!o.paths.empty()) pathFilter.emplace(PathExpression::parse(o.paths));
-  if (o.gather < 0) throw InputError("--gather must be >= 0");
-  if (o.lightRays < 0) throw InputError("--light-rays must be >= 0");
-  if (o.spp < 0) throw InputError("--spp must be >= 1");
-  if (o.exposure && !(*o.exposure > 0)) throw InputError("--exposure must be > 0");
   const bool radiosity = method.needsSolve;
   const bool separateBounces = o.bouncesSeparate.has_value();
-  if (radiosity && separateBounces) {
-    // The Neumann terms are the Jacobi iterates: B_k − B_{k−1} = (ρF)^k E.
-    o.solverName = "jacobi";
-    o.solve.bounces = *o.bouncesSeparate;
-    o.solve.keepBounceTerms = true;
-  }
   const int spp = o.spp > 0 ? o.spp : method.defaultSpp;
-  finishSolveOptions(command, o.solve, o.solverName,
-                     radiosity ? "" : "--method " + method.name + " does not solve radiosity");
-  std::string cameraSource;
   // Before any long work: a bad camera or motion description fails at once.
-  const Camera camera = resolveCamera(o, cameraSource);
+  const ResolvedCamera resolved = resolveCamera(o.camera, o.solve.scenePath);
+  const Camera& camera = resolved.camera;
+  const std::string& cameraSource = resolved.file;
   RenderWorld world(o.solve, cameraSource,
                     {o.solutionDir, o.freshSolve ? std::string() : o.solve.outputDir});
 
-  const int threads = o.solve.threads > 0 ? o.solve.threads : tbb::info::default_concurrency();
-  tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                  static_cast<size_t>(threads));
+  const ThreadLimit threadLimit(o.solve.threads);
+  const int threads = threadLimit.threads();
   nlohmann::json skipped = nlohmann::json::array();
   auto skip = [&](const std::string& what, const std::string& why) {
     logInfo("skipped: " + what + " (" + why + ")");
@@ -174,11 +156,11 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   if (!renderScene.hasSpecular())
     skip("specular branch", "the scene has no mirror or glass material");
 
-  std::unique_ptr<Integrator> integrator = method.makeIntegrator(
-      MethodInputs{renderScene, view.radiosity, o.gather, &camera,
-                   o.mis == "balance" ? MisHeuristic::Balance : MisHeuristic::Power, o.lightRays});
-  if (radiosity && o.gather == 0)
-    skip("final gather", o.lightRays > 0
+  std::unique_ptr<Integrator> integrator =
+      method.makeIntegrator(MethodInputs{renderScene, view.radiosity, o.gather, &camera,
+                                         parseName(misHeuristicTable(), o.mis, "--mis")});
+  if (radiosity && o.gather.gatherRays == 0)
+    skip("final gather", o.gather.indirectFromSolution()
                              ? "--gather 0 --light-rays N: the indirect light is the solution's"
                              : "--gather 0: interpolated radiosity preview");
   if (o.method == "bdpt" && camera.lensRadius > 0)
@@ -191,12 +173,6 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   std::vector<ImageRgb> bounceImages;
   RenderOutput render;
   const auto* pathIntegrator = dynamic_cast<const PathIntegrator*>(integrator.get());
-  // The path renderer sums whole light paths per pixel (and bdpt's light tracing into others):
-  // it has no per-pixel second pass.
-  if (o.adaptive && pathIntegrator)
-    throw InputError("--adaptive: --method " + method.name +
-                     " is not sampled adaptively; use it with radiosity, direct, whitted or "
-                     "distribution");
   if (pathIntegrator && (pathFilter || separateBounces)) {
     std::optional<BounceBinning> bounceBins;
     if (separateBounces) bounceBins.emplace(*o.bouncesSeparate);
@@ -222,7 +198,7 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
         const FinalGather eyePass(renderScene, term, FinalGatherOptions{0});
         bounceImages.push_back(renderImage(camera, eyePass, quiet).image);
       }
-      if (o.gather > 0)
+      if (o.gather.gatherRays > 0)
         skip("final gather in the bounce_* images",
              "each Neumann term is shown by the interpolated preview (--gather 0), which they sum "
              "to");
@@ -240,9 +216,9 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   ensureDirectory(o.solve.outputDir);
   const std::filesystem::path dir(o.solve.outputDir);
   // Auto exposure from the lit surfaces in view: emitter and sky pixels do not set it.
-  const ToneMap toneMap =
-      o.exposure ? ToneMap{*o.exposure}
-                 : ToneMap::autoExposure(render.image.pixels, exposureWeights(camera, renderScene));
+  const ToneMap toneMap = o.exposure.toneMap([&] {
+    return ToneMap::autoExposure(render.image.pixels, exposureWeights(camera, renderScene));
+  });
   AtomicPath exr((dir / "render.exr").string());
   writeExr(exr.tempPath(), render.image);
   AtomicPath png((dir / "render.png").string());
@@ -288,8 +264,8 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
         {"focus_distance", camera.focusDistance}}},
       {"samples_per_pixel", spp},
       {"adaptive", adaptiveReport(render, spp, settings.adaptive)},
-      {"gather_rays", radiosity ? o.gather : 0},
-      {"light_rays", radiosity ? (o.lightRays > 0 ? o.lightRays : o.gather) : 0},
+      {"gather_rays", radiosity ? o.gather.gatherRays : 0},
+      {"light_rays", radiosity ? o.gather.shadowRays() : 0},
       {"seed", o.solve.seed},
       {"threads", threads},
       {"rays",
@@ -366,7 +342,8 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
 void registerRenderCommand(CLI::App& app, CommandAction& run) {
   auto o = std::make_shared<RenderCommandOptions>();
   CLI::App* cmd = app.add_subcommand("render", "Render an image from the scene's camera");
-  cmd->add_option("scene", o->solve.scenePath, "OBJ scene file; camera from <scene>.camera.json")
+  cmd->add_option("scene", o->solve.scenePath,
+                  std::string(kSceneFileHelp) + "; camera from <scene>.camera.json")
       ->required();
   cmd->add_option("--out", o->solve.outputDir, "Output directory for render.exr/.png/.json")
       ->required();
@@ -377,36 +354,19 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
   cmd->add_option("--bounces-separate", o->bouncesSeparate,
                   "Also write bounce_k.exr/.png (the Neumann term T^k L_e) and bounce_sum_k "
                   "(terms 0..k) for k = 0..K (path, bdpt; radiosity: Jacobi iterates)");
-  cmd->add_option("--mis", o->mis, "bdpt: multiple importance sampling heuristic, power | balance")
+  cmd->add_option(
+         "--mis", o->mis,
+         "bdpt: multiple importance sampling heuristic: " + joinTableNames(misHeuristicTable()))
       ->default_val(o->mis);
-  cmd->add_option(
-         "--gather", o->gather,
-         "Final-gather rays (and shadow rays) per diffuse eye hit; 0: interpolated preview, or "
-         "with --light-rays N, direct light by N shadow rays and the solution's indirect light")
-      ->default_val(o->gather);
-  cmd->add_option(
-         "--light-rays", o->lightRays,
-         "Shadow rays to the emitters per diffuse eye hit of the final gather, MIS-weighted "
-         "against the --gather rays by their counts; 0: as many as --gather; with --gather 0: "
-         "the direct light by these rays alone, the indirect light interpolated from the solution")
-      ->default_val(o->lightRays);
+  addGatherOptions(*cmd, o->gather, "diffuse eye hit (radiosity)");
   cmd->add_option("--spp", o->spp, "Samples per pixel (default: the method's, see --method)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--adaptive", o->adaptive,
                 "Adaptive pixel sampling: --spp is the mean per pixel; a quarter of it in every "
                 "pixel, the rest shared out in proportion to the spread of the neighbours' samples "
                 "(lights' outlines, shadow edges, noisy gathers); from --spp 8");
-  cmd->add_option("--camera", o->cameraFile, "Camera JSON file (default: <scene>.camera.json)");
-  cmd->add_option("--position", o->position, "Camera position x y z")->expected(3);
-  cmd->add_option("--look-at", o->lookAt, "Point the camera looks at, x y z")->expected(3);
-  cmd->add_option("--up", o->up, "Camera up vector x y z")->expected(3);
-  cmd->add_option("--vfov", o->vfov, "Vertical field of view, degrees");
-  cmd->add_option("--width", o->width, "Image width in pixels");
-  cmd->add_option("--height", o->height, "Image height in pixels");
-  cmd->add_option("--lens-radius", o->lensRadius, "Thin-lens aperture radius (0: pinhole)");
-  cmd->add_option("--focus-distance", o->focusDistance, "Distance to the plane in focus");
-  cmd->add_option("--exposure", o->exposure,
-                  "PNG exposure (default: 99th percentile of luminance maps to 1)");
+  addCameraOptions(*cmd, o->camera, CameraOverrides::All);
+  o->exposure.add(*cmd, "PNG exposure (default: 99th percentile of luminance maps to 1)");
   cmd->add_flag("--fresh-solve", o->freshSolve,
                 "Solve even when --out holds a solution saved by an earlier render of the same "
                 "scene and solve options (otherwise it is reused)");
@@ -414,7 +374,7 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
                   "Reuse the solution `radiosity solve` (or an earlier render) saved in this "
                   "directory; an error when it was made from another scene or other solve options")
       ->excludes("--fresh-solve");
-  addSolveOptions(*cmd, o->solve, o->solverName);
+  addSolveOptions(*cmd, o->solve);
   addCommonFlags(*cmd);
   cmd->callback([&run, cmd, o] { run = [cmd, o] { runRender(*cmd, *o); }; });
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "radiosity/app/commands.h"
+#include "radiosity/app/options/option_rules.h"
 #include "radiosity/app/solve_outputs.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
@@ -104,11 +105,11 @@ void registerUpdateCommand(CLI::App& app, CommandAction& run) {
                    "gauss-seidel | jacobi: a gathering solver, which starts from the previous "
                    "solution")
       ->default_val(o->solverName)
-      ->check(CLI::IsMember({"gauss-seidel", "jacobi"}));
+      ->check(CLI::IsMember(
+          {solverKindName(SolverKind::GaussSeidel), solverKindName(SolverKind::Jacobi)}));
   update->add_option("--tolerance", o->tolerance, "Relative tolerance (default: the kept solve's)");
   update->add_option("--max-iterations", o->maxIterations, "Iteration budget (0: the default)");
-  update->add_option("--threads", o->threads, "Worker threads (0: all cores)")
-      ->check(CLI::NonNegativeNumber);
+  addThreadsOption(*update, o->threads);
   addCommonFlags(*update);
   update->callback([&run, o] { run = [o] { runUpdate(*o); }; });
 }

@@ -7,6 +7,8 @@
 #include <regex>
 
 #include "radiosity/app/commands.h"
+#include "radiosity/app/options/option_rules.h"
+#include "radiosity/app/options/solve_option_group.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
 #include "radiosity/output/display_radiance.h"
@@ -21,6 +23,7 @@
 #include "radiosity/solvers/progressive_solver.h"
 #include "radiosity/solvers/solver_factory.h"
 #include "radiosity/visibility/ray_caster.h"
+#include "viewer/display_scalars.h"
 #include "viewer/solution_polydata.h"
 #include "viewer/solution_viewer.h"
 #include "viewer/solution_vtp.h"
@@ -169,8 +172,42 @@ LinksOfElement linksForViewer(std::shared_ptr<const ElementLinks> links) {
   };
 }
 
-void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command,
-             const std::string& solverName) {
+// Every view option the input does not use, given, is an error saying why. `savedVtp`: the input
+// is a directory holding solution.vtp (no scene, no solver); otherwise `options` is the solve's.
+void checkViewOptions(const CLI::App& command, const ViewArgs& args, bool savedVtp,
+                      const SolveOptions& options) {
+  if (!args.screenshot.empty())
+    refuseIfGiven(command, "--no-help", "--screenshot draws no key overlay");
+  if (savedVtp) {
+    const std::string why = "a saved solution.vtp (view DIR) is shown as it was solved";
+    refuseAllSolveOptions(command, why);
+    refuseIfGiven(command, "--solution",
+                  args.input +
+                      " is already a solution directory (view SCENE --solution DIR shows a "
+                      "saved solve over its scene)");
+    refuseIfGiven(command, "--rays-of",
+                  "a saved solution.vtp has no form factors; open the scene to see rays");
+    refuseIfGiven(command, "--stop-after", "a saved solution.vtp has no solver to step");
+    refuseIfGiven(command, "--no-chart", "a saved solution.vtp has no iterations to chart");
+    return;
+  }
+  finishSolveOptions(command, options);
+  if (options.solver == SolverKind::Hierarchical) {
+    refuseIfGiven(command, "--stop-after", "the hierarchical solve is not stepped live");
+    refuseIfGiven(command, "--no-chart", "the hierarchical solve is shown without a chart");
+    if (!args.solutionDir.empty())
+      refuseIfGiven(command, "--rays-of",
+                    "a reused hierarchical solution (--solution) keeps no links to draw");
+  } else if (!args.solutionDir.empty()) {
+    refuseIfGiven(command, "--no-chart",
+                  "a reused solution (--solution) has no iterations to replay for a chart");
+  }
+}
+
+void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command) {
+  const bool savedVtp = std::filesystem::is_directory(args.input);
+  options.scenePath = args.input;
+  checkViewOptions(command, args, savedVtp, options);
   ViewerOptions view;
   parseSize(args.size, view);
   view.scalar = parseDisplayScalar(args.scalar);
@@ -199,29 +236,17 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
     if (!view.camera) logInfo("no " + cameraSidecarPath(scenePath) + ": framing the bounding box");
   };
 
-  if (std::filesystem::is_directory(args.input)) {
-    // A saved solution.vtp is shown as it was solved: solve options would change nothing.
-    finishSolveOptions(command, options, solverName,
-                       "a saved solution.vtp (view DIR) is shown as it was solved");
-    if (!args.solutionDir.empty())
-      throw InputError("--solution is not used: " + args.input +
-                       " is already a solution directory (view SCENE --solution DIR shows a "
-                       "saved solve over its scene)");
+  if (savedVtp) {
     const std::string path = (std::filesystem::path(args.input) / "solution.vtp").string();
     vtkSmartPointer<vtkPolyData> data = readSolutionVtp(path);
     probes = loadViewProbes(args, args.input);
     cameraFor(solutionSceneFile(data));
-    if (args.raysOf >= 0)
-      logWarning("--rays-of: a saved solution has no form factors; open the scene to see rays");
     view.pickElement = -1;
-    if (args.stopAfter >= 0) logWarning("--stop-after: a saved solution has no solver to step");
     const ToneMap toneMap = solutionToneMap(data);
     show(data, toneMap, nullptr);
     return;
   }
 
-  options.scenePath = args.input;
-  finishSolveOptions(command, options, solverName);
   options.keepLinks = options.solver == SolverKind::Hierarchical;  // what picking draws
   probes = loadViewProbes(args, args.solutionDir);  // before the solve: a bad file fails at once
   const SolveResult result =
@@ -235,13 +260,11 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
 
   if (options.solver == SolverKind::Hierarchical) {
     // The viewer shows the result and, picked, an element's links; it does not step the solve.
-    if (args.stopAfter >= 0) logWarning("--stop-after: the hierarchical solve is not stepped live");
-    if (solution.links) {
+    // A reused solution keeps no links (checkViewOptions refuses --rays-of then).
+    if (solution.links)
       view.linksOf = linksForViewer(solution.links);
-    } else {
-      if (args.raysOf >= 0) logWarning("--rays-of: a reused saved solution has no links");
+    else
       view.pickElement = -1;
-    }
     view.chart = false;
     show(data, toneMap, nullptr);
     return;
@@ -267,12 +290,12 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
 
 void registerViewCommand(CLI::App& app, CommandAction& run) {
   auto options = std::make_shared<SolveOptions>();
-  auto solverName = std::make_shared<std::string>("progressive");
   auto args = std::make_shared<ViewArgs>();
   CLI::App* view =
       app.add_subcommand("view", "Show a solution in a VTK window (or render it to a PNG)");
-  view->add_option("input", args->input,
-                   "OBJ scene (solved first) or a directory holding solution.vtp")
+  view->add_option(
+          "input", args->input,
+          std::string(kSceneFileHelp) + ", solved first, or a directory holding solution.vtp")
       ->required();
   view->add_option("--screenshot", args->screenshot,
                    "Render off-screen to this PNG instead of opening a window");
@@ -280,8 +303,7 @@ void registerViewCommand(CLI::App& app, CommandAction& run) {
       ->default_val(args->size);
   view->add_flag("--camera-from-scene", args->cameraFromScene,
                  "Use <scene>.camera.json next to the OBJ (position, look_at, up, vfov_degrees)");
-  view->add_option("--scalar", args->scalar,
-                   "colour | radiance | B_r | B_g | B_b | unshot | area | level | patch")
+  view->add_option("--scalar", args->scalar, "Colour the mesh by: " + displayScalarNames())
       ->default_val(args->scalar);
   view->add_flag("--smooth", args->smooth, "Interpolated vertex colours instead of flat elements");
   view->add_flag("--edges", args->edges, "Show element edges");
@@ -305,10 +327,10 @@ void registerViewCommand(CLI::App& app, CommandAction& run) {
                                   "spheres; default: DIR/probes.bin of view DIR or --solution DIR");
   view->add_flag("--no-probes", args->noProbes, "Do not read or show light probes")
       ->excludes(probes);
-  addSolveOptions(*view, *options, *solverName);
+  addSolveOptions(*view, *options);
   addCommonFlags(*view);
-  view->callback([&run, view, options, solverName, args] {
-    run = [view, options, solverName, args] { runView(*args, *options, *view, *solverName); };
+  view->callback([&run, view, options, args] {
+    run = [view, options, args] { runView(*args, *options, *view); };
   });
 }
 

@@ -94,8 +94,8 @@ void reportLightmap(const BakeResult& result, const BakeSpec& spec, const std::s
   l.conservative = count(TexelState::Conservative);
   l.dilated = count(TexelState::Dilated);
   l.empty = count(TexelState::Empty);
-  l.gatherRays = spec.gather;
-  l.lightRays = spec.lightRays > 0 ? spec.lightRays : spec.gather;
+  l.gatherRays = spec.gather.gatherRays;
+  l.lightRays = spec.gather.shadowRays();
   l.content = spec.content;
   l.chartSeconds = chartSeconds;
   l.bakeSeconds = bakeSeconds;
@@ -106,7 +106,7 @@ void reportLightmap(const BakeResult& result, const BakeSpec& spec, const std::s
 BakeResult bakeSolution(const SolveResult& solved, const SolveOptions& solveOptions,
                         const BakeSpec& spec, const LightmapPlan& plan) {
   const Solution& solution = solved.solution;
-  RAD_CHECK(solution.layers.empty() || (spec.gather == 0 && spec.lightRays == 0));
+  RAD_CHECK(solution.layers.empty() || !spec.gather.castsRays());
   BakeResult result = interpolateVertices(solution, spec);
   reportSolution(solved, spec, result);
   reportLightGroups(solution, result.report);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "radiosity/output/lightmap_content.h"
+#include "radiosity/render/final_gather.h"
 
 namespace rad {
 
@@ -24,8 +25,8 @@ struct BakeSpec {
   LightmapLayoutSpec layout;
   bool lightmap = true;  // false: vertex colours only (--no-lightmap)
   int dilation = 2;      // rings of texels filled around each chart, at most layout.padding
-  int gather = 0;        // per-texel final gather rays; 0: interpolate the solution
-  int lightRays = 0;     // per-texel shadow rays of the gather; 0: as many as gather
+  // Per texel: the final gather's rays (render/final_gather.h); none: the solution interpolated.
+  FinalGatherOptions gather = {0, 0};
   LightmapContent content = LightmapContent::Radiance;
   bool directional = false;        // L1 SH pages of the incident light beside the lightmap
   int directionalRays = 64;        // hemisphere rays per texel of the directional pages

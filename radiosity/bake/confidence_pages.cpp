@@ -74,9 +74,9 @@ std::vector<Lightmap> bakeConfidence(const Solution& solution, const LightmapLay
       confidencePages(solution, layout, lightmaps, spec.content, gatherError, exposure);
   BakeReport::Confidence& c = report.confidence.emplace();
   c.summary = summariseConfidence(lightmaps, pages);
-  c.includes = spec.gather > 0
+  c.includes = spec.gather.gatherRays > 0
                    ? "the per-texel gather's Monte Carlo standard error (shadow and gather rays)"
-               : spec.lightRays > 0
+               : spec.gather.indirectFromSolution()
                    ? "the per-texel direct light's Monte Carlo standard error (shadow rays; the "
                      "indirect part is the solution's, interpolated)"
                    : "the mesh's displayed error (the interpolated values against the "

@@ -12,9 +12,8 @@ LightmapPages::LightmapPages(const Solution& solution, const LightmapLayout& lay
       spec_(spec) {
   // --gather N, or --gather 0 --light-rays N: the direct light per texel, the indirect part the
   // solution's (final_gather.h).
-  if (spec.gather > 0 || spec.lightRays > 0) {
-    gather_ = std::make_unique<const FinalGather>(rays.view(), solution.radiosity,
-                                                  FinalGatherOptions{spec.gather, spec.lightRays});
+  if (spec.gather.castsRays()) {
+    gather_ = std::make_unique<const FinalGather>(rays.view(), solution.radiosity, spec.gather);
     gatherError_.assign(layout.pages,
                         std::vector<Rgb>(static_cast<size_t>(layout.width) * layout.height));
   }

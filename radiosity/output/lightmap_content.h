@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "radiosity/core/named_values.h"
+
 namespace rad {
 
 // What a baked lightmap's texels hold (`bake --lightmap-content`).
@@ -13,8 +15,15 @@ enum class LightmapContent {
   Irradiance,
 };
 
+// The command line's and the reports' names, the one list of them.
+inline const NameTable<LightmapContent>& lightmapContentTable() {
+  static const NameTable<LightmapContent> table = {{"radiance", LightmapContent::Radiance},
+                                                   {"irradiance", LightmapContent::Irradiance}};
+  return table;
+}
+
 inline std::string lightmapContentName(LightmapContent content) {
-  return content == LightmapContent::Radiance ? "radiance" : "irradiance";
+  return nameOf(lightmapContentTable(), content);
 }
 
 // One line for the exports' metadata (bake.json, the glTF's asset.extras).

@@ -365,7 +365,7 @@ UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
 
   Solution& solution = started.result.solution;
   SolveReport& report = started.result.report;
-  const ThreadLimit threads(options, report);
+  const ThreadLimit threads = limitSolveThreads(options, report);
   const auto t = Clock::now();
   solution.scene = loadScene(options.scenePath, options.lights, options.twoSided);
   report.times.load = secondsSince(t);
@@ -396,7 +396,7 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   SolveReport& report = result.report;
   SolveReport::Update& update = report.update;
   update.keptFactors = keptPath;
-  const ThreadLimit threads(options, report);
+  const ThreadLimit threads = limitSolveThreads(options, report);
   const PatchMesh& mesh = *solution.mesh;
   const EditRegion edit = findEdit(kept, mesh, update);
 

@@ -73,7 +73,7 @@ RelightStart startRelight(const KeptFactors& header, const std::string& keptPath
   checkKeptSceneFits(header, keptPath, scene);
   Solution& solution = started.result.solution;
   SolveReport& report = started.result.report;
-  const ThreadLimit threads(options, report);
+  const ThreadLimit threads = limitSolveThreads(options, report);
   solution.scene = std::move(scene);
   meshStage(solution, options, report);
   // E and ρ from the materials as they are now (the lights' first shot is added from the kept
@@ -89,7 +89,7 @@ SolveResult finishRelight(RelightStart started, KeptFactors kept, const std::str
   SolveResult result = std::move(started.result);
   Solution& solution = result.solution;
   SolveReport& report = result.report;
-  const ThreadLimit threads(options, report);
+  const ThreadLimit threads = limitSolveThreads(options, report);
   const int n = solution.mesh->elementCount();
   if (n != static_cast<int>(kept.area.size()))
     throw InputError(keptPath, 0,

@@ -7,14 +7,18 @@
 
 namespace rad {
 
+const NameTable<FormFactorMethod>& formFactorMethodTable() {
+  static const NameTable<FormFactorMethod> table = {{"hemisphere", FormFactorMethod::Hemisphere},
+                                                    {"analytic", FormFactorMethod::Analytic}};
+  return table;
+}
+
 FormFactorMethod parseFormFactorMethod(const std::string& name) {
-  if (name == "hemisphere") return FormFactorMethod::Hemisphere;
-  if (name == "analytic") return FormFactorMethod::Analytic;
-  throw InputError("unknown form-factor method '" + name + "' (expected hemisphere or analytic)");
+  return parseName(formFactorMethodTable(), name, "form-factor method");
 }
 
 std::string formFactorMethodName(FormFactorMethod method) {
-  return method == FormFactorMethod::Analytic ? "analytic" : "hemisphere";
+  return nameOf(formFactorMethodTable(), method);
 }
 
 void validateSolveOptions(const SolveOptions& options) {

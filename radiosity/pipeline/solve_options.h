@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 
+#include "radiosity/core/named_values.h"
 #include "radiosity/scene/lights.h"
 #include "radiosity/scene/two_sided.h"
 #include "radiosity/solvers/solver_factory.h"
@@ -13,6 +14,7 @@ namespace rad {
 // How form factors are computed: hemisphere rows per element (ray cast), or analytic
 // element-to-patch factors (point-to-polygon with shadow rays; patches shoot, elements receive).
 enum class FormFactorMethod { Hemisphere, Analytic };
+const NameTable<FormFactorMethod>& formFactorMethodTable();       // "hemisphere", "analytic"
 FormFactorMethod parseFormFactorMethod(const std::string& name);  // throws InputError
 std::string formFactorMethodName(FormFactorMethod method);
 

@@ -94,7 +94,7 @@ SolveResult solveScene(Scene scene, const SolveOptions& options) {
   SolveResult result;
   Solution& solution = result.solution;
   SolveReport& report = result.report;
-  const ThreadLimit threads(options, report);
+  const ThreadLimit threads = limitSolveThreads(options, report);
   checkScene(scene, options, report);
   solution.scene = std::move(scene);
   const ElementSizing sizing = meshStage(solution, options, report);

@@ -1,7 +1,5 @@
 #include "radiosity/pipeline/solve_stages.h"
 
-#include <tbb/info.h>
-
 #include <chrono>
 #include <string>
 
@@ -11,18 +9,9 @@
 #include "radiosity/pipeline/solver_results.h"
 
 namespace rad {
-namespace {
-
-int threadCount(const SolveOptions& options) {
-  return options.threads > 0 ? options.threads : tbb::info::default_concurrency();
-}
-
-}  // namespace
-
-ThreadLimit::ThreadLimit(const SolveOptions& options, SolveReport& report)
-    : control_(tbb::global_control::max_allowed_parallelism,
-               static_cast<size_t>(threadCount(options))) {
-  report.threads = threadCount(options);
+ThreadLimit limitSolveThreads(const SolveOptions& options, SolveReport& report) {
+  report.threads = threadCount(options.threads);
+  return ThreadLimit(options.threads);
 }
 
 ElementSizing meshStage(Solution& solution, const SolveOptions& options, SolveReport& report) {

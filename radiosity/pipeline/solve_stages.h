@@ -1,11 +1,10 @@
 #pragma once
 
-#include <tbb/global_control.h>
-
 #include "radiosity/pipeline/element_size.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_options.h"
+#include "radiosity/pipeline/thread_limit.h"
 #include "radiosity/solvers/solver.h"
 #include "radiosity/visibility/element_exposure.h"
 #include "radiosity/visibility/ray_caster.h"
@@ -15,15 +14,9 @@ namespace rad {
 // The stages that the composing functions share: solveScene's (solve_pipeline.h), relight's and
 // update's. Each is one named step of them.
 
-// The threads a solve runs on: --threads, or every core for 0 (report.threads), TBB held to
-// them while this lives.
-class ThreadLimit {
- public:
-  ThreadLimit(const SolveOptions& options, SolveReport& report);
-
- private:
-  tbb::global_control control_;
-};
+// The threads a solve runs on (--threads, or every core for 0) into report.threads; TBB held to
+// them while the returned limit lives.
+ThreadLimit limitSolveThreads(const SolveOptions& options, SolveReport& report);
 
 // meshScene of solution.scene into solution.mesh; the element size, its rule and the element
 // count before refinement into the report, with the time; one log line. Returns the sizing.

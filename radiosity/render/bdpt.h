@@ -3,12 +3,19 @@
 #include <string>
 #include <vector>
 
+#include "radiosity/core/named_values.h"
 #include "radiosity/render/camera.h"
 #include "radiosity/render/path_integrator.h"
 
 namespace rad {
 
 enum class MisHeuristic { Balance, Power };  // Veach's β = 1 and β = 2
+// `render --mis` names, the one list of them.
+inline const NameTable<MisHeuristic>& misHeuristicTable() {
+  static const NameTable<MisHeuristic> table = {{"power", MisHeuristic::Power},
+                                                {"balance", MisHeuristic::Balance}};
+  return table;
+}
 
 struct BdptOptions {
   MisHeuristic heuristic = MisHeuristic::Power;

@@ -25,6 +25,14 @@ struct FinalGatherOptions {
   // of the variance (the Cornell box: docs/benchmarks.md, "Error against time"); the MIS weights
   // count the rays of each kind (power heuristic with n·pdf), so any count stays unbiased.
   int lightRays = 0;
+
+  // The one place the two counts decide the mode (the gather, the command line's reports):
+  // shadow rays per hit, lightRays or else as many as gatherRays;
+  int shadowRays() const { return lightRays > 0 ? lightRays : gatherRays; }
+  // gatherRays 0 with lightRays: the direct light per hit, the indirect light the solution's;
+  bool indirectFromSolution() const { return gatherRays == 0 && lightRays > 0; }
+  // whether rays are cast per hit at all (otherwise the solution is interpolated there).
+  bool castsRays() const { return gatherRays > 0 || lightRays > 0; }
 };
 
 // The eye pass over a radiosity solution (B per element, stored on the mesh): L(D|S)*E from the
@@ -74,7 +82,7 @@ class FinalGather : public Integrator {
   // edge, a light's fall-off, exact however coarse the mesh), the interreflected light from the
   // solution, interpolated: no gather ray, so no gather noise; the indirect part's discretisation
   // is the bias, small where the indirect light varies slowly (docs/rendering.md).
-  bool indirectFromSolution() const { return options_.gatherRays == 0 && options_.lightRays > 0; }
+  bool indirectFromSolution() const { return options_.indirectFromSolution(); }
   Rgb interpolatedRadiance(const SurfaceHit& hit) const;  // B/π at the hit, from vertex values
   // The solution's indirect incident light H_i/π at barycentrics (u, v) of `element`, from
   // vertexIndirect_.
@@ -104,9 +112,7 @@ class FinalGather : public Integrator {
   // `gathersPerLight`: cosine rays per shadow ray in the MIS pair (power heuristic with counts).
   Rgb lightSample(const SurfaceHit& hit, Point2 u, RayCounts& counts,
                   double gathersPerLight = 1.0) const;
-  int lightRays() const {
-    return options_.lightRays > 0 ? options_.lightRays : options_.gatherRays;
-  }
+  int lightRays() const { return options_.shadowRays(); }
   // Per element: the mean of lightSample over its area (stratified points), and whether every
   // one of those points saw the emitters alike (all lit, or none: no shadow edge, no emitter
   // plane crossing the element).

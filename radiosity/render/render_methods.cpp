@@ -35,8 +35,7 @@ const std::vector<RenderMethod>& renderMethods() {
       {"radiosity", "L(D|S)*E", "radiosity solution (LD*) with final gather and specular chains",
        true, false, 16,
        [](const MethodInputs& in) {
-         return std::make_unique<FinalGather>(in.scene, *in.radiosity,
-                                              FinalGatherOptions{in.gather, in.lightRays});
+         return std::make_unique<FinalGather>(in.scene, *in.radiosity, in.gather);
        }},
   };
   return methods;

@@ -8,6 +8,7 @@
 #include "radiosity/core/rgb.h"
 #include "radiosity/render/bdpt.h"
 #include "radiosity/render/camera.h"
+#include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
 #include "radiosity/render/integrator.h"
 
@@ -22,10 +23,10 @@ constexpr int kRenderGather = 1;
 struct MethodInputs {
   const RenderScene& scene;
   const std::vector<Rgb>* radiosity = nullptr;  // B per element, for methods that need the solve
-  int gather = kRenderGather;                   // final-gather rays per diffuse eye hit
-  const Camera* camera = nullptr;               // bdpt: light tracing connects to the camera
-  MisHeuristic mis = MisHeuristic::Power;       // bdpt
-  int lightRays = 0;  // final gather: shadow rays per diffuse eye hit; 0: as many as `gather`
+  // The final gather's rays per diffuse eye hit (radiosity).
+  FinalGatherOptions gather = {kRenderGather, 0};
+  const Camera* camera = nullptr;          // bdpt: light tracing connects to the camera
+  MisHeuristic mis = MisHeuristic::Power;  // bdpt
 };
 
 // One way to solve the rendering equation for an image, and the light paths it captures in

@@ -10,16 +10,6 @@
 namespace rad {
 namespace {
 
-struct KindName {
-  SolverKind kind;
-  const char* name;
-};
-constexpr KindName kKinds[] = {{SolverKind::Progressive, "progressive"},
-                               {SolverKind::Southwell, "southwell"},
-                               {SolverKind::GaussSeidel, "gauss-seidel"},
-                               {SolverKind::Jacobi, "jacobi"},
-                               {SolverKind::Hierarchical, "hierarchical"}};
-
 // The columns of the gathering matrix must outlive the shooting that reads them: they are a base
 // constructed before the ProgressiveSolver base that refers to them.
 struct OwnedColumns {
@@ -35,23 +25,22 @@ class SouthwellSolver final : private OwnedColumns, public ProgressiveSolver {
 
 }  // namespace
 
+const NameTable<SolverKind>& solverKindTable() {
+  static const NameTable<SolverKind> table = {{"progressive", SolverKind::Progressive},
+                                              {"southwell", SolverKind::Southwell},
+                                              {"gauss-seidel", SolverKind::GaussSeidel},
+                                              {"jacobi", SolverKind::Jacobi},
+                                              {"hierarchical", SolverKind::Hierarchical}};
+  return table;
+}
+
 SolverKind parseSolverKind(const std::string& name) {
-  for (const KindName& k : kKinds)
-    if (name == k.name) return k.kind;
-  throw InputError("unknown solver '" + name + "' (expected " + solverKindNames() + ")");
+  return parseName(solverKindTable(), name, "solver");
 }
 
-std::string solverKindName(SolverKind kind) {
-  for (const KindName& k : kKinds)
-    if (kind == k.kind) return k.name;
-  return "?";
-}
+std::string solverKindName(SolverKind kind) { return nameOf(solverKindTable(), kind); }
 
-std::string solverKindNames() {
-  std::string names;
-  for (const KindName& k : kKinds) names += (names.empty() ? "" : " | ") + std::string(k.name);
-  return names;
-}
+std::string solverKindNames() { return joinTableNames(solverKindTable()); }
 
 bool needsGatheringMatrix(SolverKind kind) {
   return kind != SolverKind::Progressive && kind != SolverKind::Hierarchical;

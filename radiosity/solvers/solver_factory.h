@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "radiosity/core/named_values.h"
 #include "radiosity/formfactors/shot_rows.h"
 #include "radiosity/solvers/radiosity_problem.h"
 #include "radiosity/solvers/solver.h"
@@ -15,6 +16,8 @@ namespace rad {
 // Hierarchical radiosity links nodes of a tree over the elements instead of element rows: the
 // pipeline builds it (pipeline/hierarchical_solve), not makeSolver.
 enum class SolverKind { Progressive, Southwell, GaussSeidel, Jacobi, Hierarchical };
+// The solvers' command-line names ("progressive", "gauss-seidel", ...), the one list of them.
+const NameTable<SolverKind>& solverKindTable();
 SolverKind parseSolverKind(const std::string& name);  // InputError naming the known ones
 std::string solverKindName(SolverKind kind);
 // "progressive | southwell | gauss-seidel | jacobi | hierarchical", for help texts.

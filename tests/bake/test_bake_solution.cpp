@@ -91,7 +91,7 @@ TEST(BakeSolution, FurnaceTexelsHoldTheAnalyticRadianceAndIrradiance) {
 TEST(BakeSolution, FurnaceGatherIsUnbiasedWithinItsStandardError) {
   const SolveResult solved = solvedFurnace(200);
   BakeSpec spec = smallSpec();
-  spec.gather = 16;
+  spec.gather = {16, 0};
   const BakeResult baked = bakeSolution(solved, SolveOptions(), spec);
   const double exact = kKe * (bounceSum(0) + std::pow(kRho, kBounces + 1));
   double sum = 0, variance = 0;

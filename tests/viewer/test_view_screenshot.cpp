@@ -252,7 +252,7 @@ TEST(ViewScreenshot, HierarchicalSolveDrawsAPickedElementsLinks) {
   const fs::path dir = cornellWithCamera("view_links");
   const std::string common = (dir / "cornell_box.obj").string() +
                              " --solver hierarchical --elements 300 --rays 64 --camera-from-scene"
-                             " --no-help --size 320x240 --screenshot ";
+                             " --size 320x240 --screenshot ";
   std::string errors;
   const fs::path plain = dir / "plain.png", links = dir / "links.png";
   ASSERT_EQ(runView(common + plain.string(), errors), 0) << errors;
