@@ -296,12 +296,12 @@ void registerBakeCommand(CLI::App& app, CommandAction& run) {
   addSolveOptions(*bake, o->solve);
   auto* texel = bake->add_option("--texel-size", o->texelSize,
                                  "Lightmap texel size in scene units (pages grow to fit)")
-                    ->check(CLI::PositiveNumber);
+                    ->check(positiveNumber());
   bake->add_option(
           "--texel-density", o->texelDensity,
           "Lightmap texels per scene unit (default: " + formatNumber(kDefaultLightmapTexels) +
               " texels over the scene's surface); more pages when one does not hold them")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveNumber())
       ->excludes(texel);
   bake->add_option("--lightmap-size", o->lightmapSize,
                    "Alone: the side of one square lightmap page, at the densest texels that fit; "

@@ -194,7 +194,7 @@ void registerCompareCommand(CLI::App& app, CommandAction& run) {
                   "Methods to compare, in this order (default: all: " + renderMethodNames() + ")")
       ->delimiter(',');
   cmd->add_option("--spp", o->spp, "Samples per pixel for every method (default: each method's)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   addGatherRaysOption(*cmd, o->gather, "diffuse eye hit (radiosity)");
   cmd->add_option("--columns", o->columns, "Tiles per row of the contact sheet")
       ->default_val(o->columns);

@@ -360,7 +360,7 @@ void registerRenderCommand(CLI::App& app, CommandAction& run) {
       ->default_val(o->mis);
   addGatherOptions(*cmd, o->gather, "diffuse eye hit (radiosity)");
   cmd->add_option("--spp", o->spp, "Samples per pixel (default: the method's, see --method)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   cmd->add_flag("--adaptive", o->adaptive,
                 "Adaptive pixel sampling: --spp is the mean per pixel; a quarter of it in every "
                 "pixel, the rest shared out in proportion to the spread of the neighbours' samples "

@@ -314,11 +314,11 @@ void registerViewCommand(CLI::App& app, CommandAction& run) {
   view->add_flag("--no-help", args->noHelp, "Start without the key overlay");
   view->add_option("--rays-of", args->raysOf,
                    "Draw the form-factor rays of this element (--solver hierarchical: its links)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   view->add_option(
           "--stop-after", args->stopAfter,
           "Show the solver restarted from B = E after this many iterations (shots, sweeps)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   view->add_option("--solution", args->solutionDir,
                    "Show the solution `radiosity solve` saved in this directory for the scene "
                    "(same solve options) instead of solving");

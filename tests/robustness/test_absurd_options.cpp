@@ -34,7 +34,7 @@ TEST(ResourceLimits, AbsurdOptionsAreRejectedWithTheirName) {
                {"--elements 0", "--elements", 2},
                {"--elements -3", "--elements", 2},
                {"--max-area -1", "--max-area", 1},
-               {"--threads -2", "--threads", 1},
+               {"--threads -2", "--threads", 2},
                {"--tolerance nan", "--tolerance", 1},
                {"--time-limit -1", "--time-limit", 2},
                {"--patch-area -1", "--patch-area", 1},

@@ -5,6 +5,32 @@
 
 namespace rad {
 
+namespace {
+
+// A number whose sign `accepts`; `rule` names it in --help and in the message.
+CLI::Validator signCheck(const std::string& rule, bool (*accepts)(double)) {
+  return CLI::Validator(
+      [rule, accepts](std::string& text) -> std::string {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value)) return "must be a number, not " + text;
+        if (!accepts(value)) return "must be " + rule + ", not " + text;
+        return {};
+      },
+      "NUMBER " + rule);
+}
+
+}  // namespace
+
+const CLI::Validator& positiveNumber() {
+  static const CLI::Validator check = signCheck("> 0", [](double v) { return v > 0; });
+  return check;
+}
+
+const CLI::Validator& nonNegativeNumber() {
+  static const CLI::Validator check = signCheck(">= 0", [](double v) { return v >= 0; });
+  return check;
+}
+
 void addCommonFlags(CLI::App& command) {
   command.add_flag_callback(
       "--quiet,-q", [] { setLogLevel(LogLevel::Quiet); }, "Only warnings and errors on stderr");
@@ -13,7 +39,7 @@ void addCommonFlags(CLI::App& command) {
 CLI::Option* addThreadsOption(CLI::App& command, int& threads) {
   return command.add_option("--threads", threads, "Worker threads (0: all cores)")
       ->default_val(threads)
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
 }
 
 std::set<std::string> givenOptions(const CLI::App& command) {

@@ -20,6 +20,12 @@ void addCommonFlags(CLI::App& command);
 // (pipeline/thread_limit.h).
 CLI::Option* addThreadsOption(CLI::App& command, int& threads);
 
+// Checks of a number's sign, with a message a user reads ("must be > 0, not -2"); CLI11's own
+// PositiveNumber and NonNegativeNumber print the range up to the largest double. A value they
+// refuse is a usage error (exit 2), as every check on the command line is.
+const CLI::Validator& positiveNumber();
+const CLI::Validator& nonNegativeNumber();
+
 // The long names ("--rays") of the options the user gave to `command`. Defaults are not given:
 // an option counts only when it is on the command line.
 std::set<std::string> givenOptions(const CLI::App& command);

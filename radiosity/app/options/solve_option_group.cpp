@@ -75,14 +75,14 @@ void addSolve(CLI::App& command, SolveOptions& options) {
                   "Element size S in scene units: no element larger than the equilateral "
                   "triangle of edge S (default: from the scene's extent and area, see "
                   "docs/options.md)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   command.add_option("--max-area", options.maxArea,
                      "Largest element area in scene units² (instead of --element-size)");
   command
       .add_option("--elements", options.targetElements,
                   "Element count, met within 20% by splitting the largest elements first "
                   "(instead of --element-size)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   command
       .add_option("--tolerance", options.tolerance,
                   "Stop at this relative residual (gauss-seidel, jacobi) or unshot fraction "
@@ -119,7 +119,7 @@ void addSolve(CLI::App& command, SolveOptions& options) {
       .add_option("--time-limit", options.timeLimit,
                   "Stop iterating after this many seconds and keep the solution so far, flagged "
                   "as not converged in summary.json (0: no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   command
       .add_option("--receiver-points", options.receiverPoints,
                   "analytic: sample points per element, 1 or 3")
