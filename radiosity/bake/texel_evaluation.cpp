@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "radiosity/core/rng.h"
+#include "radiosity/core/stream_tags.h"
 #include "radiosity/output/vertex_colors_ply.h"
 #include "radiosity/render/sobol_sampler.h"
 #include "radiosity/render/texel_footprint.h"
@@ -56,7 +57,7 @@ GatheredTexels::GatheredTexels(const Solution& solution, const FinalGather& gath
 
 Rgb GatheredTexels::operator()(int page, int e, const Eigen::Vector3d& b, size_t texel,
                                Rgb& standardError) const {
-  const uint64_t key = streamKey(seed_, 0x6c6d6170ull + page, texel);  // per texel
+  const uint64_t key = streamKey(seed_, stream_tag::kLightmapTexel + page, texel);  // per texel
   Rng rng(key);
   SobolSampler sampler(seed_, key, rng);
   sampler.startSample(0);

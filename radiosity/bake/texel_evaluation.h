@@ -59,8 +59,9 @@ class InterpolatedTexels {
 // light by shadow rays to the emitters and gathered light from the solution at every texel, for
 // shadows sharper than the elements. The rays leave from points spread over the texel's
 // footprint on its element: the texel holds its box-filtered mean, as Cycles' bake and the
-// engines' lightmappers give. Each texel draws from its own stream, streamKey(seed, 0x6c6d6170 +
-// page, texel), so a page is the same for a seed whatever the thread count.
+// engines' lightmappers give. Each texel draws from its own stream, streamKey(seed,
+// stream_tag::kLightmapTexel + page, texel), so a page is the same for a seed whatever the thread
+// count.
 class GatheredTexels {
  public:
   GatheredTexels(const Solution& solution, const FinalGather& gather, const LightmapLayout& layout,

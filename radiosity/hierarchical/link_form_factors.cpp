@@ -9,6 +9,7 @@
 #include <numeric>
 
 #include "radiosity/core/rng.h"
+#include "radiosity/core/stream_tags.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 
 namespace rad {
@@ -57,7 +58,7 @@ uint64_t LinkFormFactors::computeReceiver(LinkSet& links, int receiver) const {
   if (first == last || !(hi > lo)) return 0;
 
   const int n = raysPerReceiver_;
-  Rng rng(streamKey(seed_, 0x48696572ull /* "Hier" */, static_cast<uint64_t>(receiver)));
+  Rng rng(streamKey(seed_, stream_tag::kHierarchicalLinks, static_cast<uint64_t>(receiver)));
   // Directions: a jittered grid over the unit square, its cells dealt to the rays in a shuffled
   // order, so origins (stratified by area) and directions are stratified independently.
   const int grid = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(n))));

@@ -12,6 +12,7 @@
 #include "radiosity/core/check.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/rng.h"
+#include "radiosity/core/stream_tags.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/receiver_points.h"
 #include "radiosity/pipeline/solver_results.h"
@@ -207,7 +208,7 @@ void DirectLightStage::compute(int e) {
   // element's edges (under an arcade, beside a wall) is never seen; on the shared atrium that
   // made the indirectly lit parts 5-15% too dark at the default element size (docs/physics.md).
   const uint64_t stream = elementStream(mesh_, e);
-  Rng jitter(streamKey(seed_ ^ 0x617265616d65616eull, stream));
+  Rng jitter(streamKey(seed_ ^ stream_tag::kLightAreaMean, stream));
   Rgb areaSum;
   const int used =
       forEachExposedStratum(mesh_, exposure_, e, jitter, [&](const Eigen::Vector3d& x, int j) {
@@ -215,7 +216,8 @@ void DirectLightStage::compute(int e) {
           if (samplePointLights_ && isPointLike(scene_.lights[l])) continue;
           areaSum += directIrradiance(
               scene_.lights[l], rays_, x, n,
-              streamKey(seed_ ^ 0x617265616d65616eull, stream, 1 + l * 64 + j), cast, kAreaRays);
+              streamKey(seed_ ^ stream_tag::kLightAreaMean, stream, 1 + l * 64 + j), cast,
+              kAreaRays);
         }
         if (samplePointLights_)
           areaSum += sampledPointLightIrradiance(pointLights_, rays_, x, n, jitter.uniform(), cast);
@@ -252,7 +254,8 @@ void DirectLightStage::compute(int e) {
       if (exposed[k])
         atPoints[k] += directIrradiance(
             scene_.lights[l], rays_, points[k], n,
-            streamKey(seed_ ^ 0x6c69676874ull, stream, l * 3 + static_cast<uint64_t>(k)), cast);
+            streamKey(seed_ ^ stream_tag::kLightShot, stream, l * 3 + static_cast<uint64_t>(k)),
+            cast);
   Rgb pointMean;
   for (int k = 0; k < count; ++k)
     if (exposed[k]) pointMean += atPoints[k];

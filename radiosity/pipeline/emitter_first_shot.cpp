@@ -8,6 +8,7 @@
 
 #include "meshing/element_stream.h"
 #include "radiosity/core/check.h"
+#include "radiosity/core/stream_tags.h"
 #include "radiosity/formfactors/point_to_polygon.h"
 #include "radiosity/pipeline/exposed_strata.h"
 
@@ -63,22 +64,22 @@ void EmitterFirstShot::apply(RadiosityProblem& problem) {
   for (int e : emitters_) emission_[e] = problem.emission[e];
   irradiance_.assign(problem.size(), Rgb());
   std::atomic<uint64_t> cast{0};
-  tbb::parallel_for(tbb::blocked_range<int>(0, problem.size(), 64),
-                    [&](const tbb::blocked_range<int>& range) {
-                      uint64_t local = 0;
-                      for (int e = range.begin(); e < range.end(); ++e) {
-                        if (problem.reflectance[e].maxComponent() <= 0) continue;
-                        const Eigen::Vector3d n = mesh_.normal(e);
-                        Rng rng(streamKey(seed_ ^ 0x656d6974746572ull, elementStream(mesh_, e)));
-                        Rgb sum;
-                        const int used = forEachExposedStratum(
-                            mesh_, &exposure_, e, rng,
-                            [&](const Eigen::Vector3d& x, int) { sum += directAt(x, n, rng); });
-                        local += static_cast<uint64_t>(used) * raysPerPoint_;
-                        irradiance_[e] = used > 0 ? sum / used : Rgb();
-                      }
-                      cast += local;
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, problem.size(), 64), [&](const tbb::blocked_range<int>& range) {
+        uint64_t local = 0;
+        for (int e = range.begin(); e < range.end(); ++e) {
+          if (problem.reflectance[e].maxComponent() <= 0) continue;
+          const Eigen::Vector3d n = mesh_.normal(e);
+          Rng rng(streamKey(seed_ ^ stream_tag::kEmitterFirstShot, elementStream(mesh_, e)));
+          Rgb sum;
+          const int used = forEachExposedStratum(
+              mesh_, &exposure_, e, rng,
+              [&](const Eigen::Vector3d& x, int) { sum += directAt(x, n, rng); });
+          local += static_cast<uint64_t>(used) * raysPerPoint_;
+          irradiance_[e] = used > 0 ? sum / used : Rgb();
+        }
+        cast += local;
+      });
   raysCast_ = cast;
   for (int e = 0; e < problem.size(); ++e)
     problem.emission[e] += problem.reflectance[e] * irradiance_[e] - emission_[e];

@@ -6,13 +6,14 @@
 
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
+#include "radiosity/core/stream_tags.h"
 #include "radiosity/scene/texture.h"
 
 namespace rad {
 namespace {
 
 constexpr double kGoldenTurn = 0.6180339887498949;  // 1 / golden ratio
-constexpr uint64_t kTexelStream = 0x4c315348ull;    // "L1SH"
+constexpr uint64_t kTexelStream = stream_tag::kDirectionalTexel;
 
 // Two unit vectors completing `n` to a right-handed orthonormal frame (Duff et al. 2017).
 void tangentFrame(const Eigen::Vector3d& n, Eigen::Vector3d& t, Eigen::Vector3d& b) {

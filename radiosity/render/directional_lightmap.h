@@ -62,8 +62,8 @@ struct DirectionalLightmapPage {
 };
 
 // One page of directional lightmaps from `radiosity` (B per element of view.mesh()), `rays` per
-// texel. The texel's random stream is streamKey(seed, 0x4c315348 + page, texel), so the page is
-// the same for a seed whatever the thread count. InputError when rays < 1.
+// texel. The texel's random stream is streamKey(seed, stream_tag::kDirectionalTexel + page, texel),
+// so the page is the same for a seed whatever the thread count. InputError when rays < 1.
 DirectionalLightmapPage bakeDirectionalPage(const RenderScene& view,
                                             const std::vector<Rgb>& radiosity,
                                             const LightmapLayout& layout,

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "radiosity/core/rng.h"
+#include "radiosity/core/stream_tags.h"
 #include "radiosity/pipeline/emitter_first_shot.h"
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/render/scattering.h"
@@ -152,9 +153,10 @@ FinalGather::ElementLight FinalGather::meanLightSample() const {
       Rgb sum;
       int lit = 0;
       const int exposed = forEachExposedPoint(
-          scene_, exposure_, e, kPoints, 0x4d45414e, [&](const SurfaceHit& hit, int k) {
-            const Rgb v =
-                lightSample(hit, SobolSampler::point(k, streamKey(0x4d45414e, e, 2)), unused);
+          scene_, exposure_, e, kPoints, stream_tag::kElementMean,
+          [&](const SurfaceHit& hit, int k) {
+            const Rgb v = lightSample(
+                hit, SobolSampler::point(k, streamKey(stream_tag::kElementMean, e, 2)), unused);
             lit += v.maxComponent() > 0;
             sum += v;
           });
@@ -173,7 +175,7 @@ std::vector<Rgb> FinalGather::meanDirectLight() const {
   // solve's own problem (E and ρ as it shoots them, cut-outs too), every emitter shot, however
   // large: bounded beside an emitter, where a shadow ray's E·cos·cos/r² has no bound.
   RadiosityProblem problem = makeProblem(scene_.scene(), mesh, &exposure_);
-  EmitterFirstShot shot(mesh, scene_.caster(), exposure_, 0x6469726563740000ull, kMeanDirectRays,
+  EmitterFirstShot shot(mesh, scene_.caster(), exposure_, stream_tag::kSplitDirect, kMeanDirectRays,
                         /*largeEmitterShare=*/1.0);
   shot.apply(problem);
   if (shot.active())
@@ -196,12 +198,12 @@ std::vector<Rgb> FinalGather::meanSceneLight() const {
       if (scene_.material(e).isSpecular() || rho_[e].maxComponent() == 0) continue;
       Rgb sum;
       const int exposed = forEachExposedPoint(
-          scene_, exposure_, e, kPoints, 0x4c494748, [&](const SurfaceHit& hit, int k) {
+          scene_, exposure_, e, kPoints, stream_tag::kLightMean, [&](const SurfaceHit& hit, int k) {
             sum += lights.deltaIrradiance(scene_, hit, unused);
             for (int a = 0; a < lights.areaCount(); ++a)
-              sum += lights.sampleArea(a, scene_, hit,
-                                       SobolSampler::point(k, streamKey(0x4c494748, e, 2 + a)),
-                                       unused, 0.0);
+              sum += lights.sampleArea(
+                  a, scene_, hit,
+                  SobolSampler::point(k, streamKey(stream_tag::kLightMean, e, 2 + a)), unused, 0.0);
           });
       mean[e] = exposed > 0 ? sum / (exposed * M_PI) : Rgb();
     }

@@ -11,6 +11,7 @@
 
 #include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
+#include "radiosity/core/stream_tags.h"
 #include "radiosity/render/adaptive_allocation.h"
 #include "radiosity/render/sobol_sampler.h"
 
@@ -96,7 +97,8 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator,
     sums.count[pixel] = to;
   };
   forEachRow(camera.height, progress.get(), counts, [&](int y, RayCounts& local) {
-    for (int x = 0; x < camera.width; ++x) samplePixel(x, y, 0, firstPass, 0x52454e44, local);
+    for (int x = 0; x < camera.width; ++x)
+      samplePixel(x, y, 0, firstPass, stream_tag::kPixel, local);
   });
   if (adaptive) {
     std::vector<double> spread(pixels);
@@ -109,7 +111,7 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator,
     forEachRow(camera.height, progress.get(), counts, [&](int y, RayCounts& local) {
       for (int x = 0; x < camera.width; ++x) {
         const size_t p = static_cast<size_t>(y) * camera.width + x;
-        samplePixel(x, y, firstPass, firstPass + extra.extra[p], 0x41444150, local);
+        samplePixel(x, y, firstPass, firstPass + extra.extra[p], stream_tag::kAdaptivePass, local);
       }
     });
     out.samples = sums.count;

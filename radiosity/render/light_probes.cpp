@@ -13,6 +13,7 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/core/rng.h"
+#include "radiosity/core/stream_tags.h"
 #include "radiosity/scene/light_shapes.h"
 
 namespace rad {
@@ -45,7 +46,7 @@ ProbeSh computeProbe(const RenderScene& view, const std::vector<Rgb>& radiosity,
                      const ProbeLights& lights) {
   ProbeSh probe;
   probe.position = x;
-  Rng rng(streamKey(seed, 0x50524f42, index));
+  Rng rng(streamKey(seed, stream_tag::kProbe, index));
   const Eigen::Matrix3d rotation = randomRotation(rng);
   const double weight = 4 * M_PI / rays;
   int backHits = 0;

@@ -9,6 +9,7 @@
 
 #include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
+#include "radiosity/core/stream_tags.h"
 #include "radiosity/render/sobol_sampler.h"
 
 namespace rad {
@@ -56,7 +57,7 @@ PathRenderOutput renderPathImage(const Camera& camera, const PathIntegrator& int
       for (int x = 0; x < width; ++x) {
         // The stream key and the draws are renderImage's: same seed, same samples.
         const uint64_t pixel = static_cast<uint64_t>(y) * width + x;
-        Rng rng(streamKey(settings.seed, pixel, 0x52454e44));
+        Rng rng(streamKey(settings.seed, pixel, stream_tag::kPixel));
         SobolSampler sampler(settings.seed, pixel, rng);
         Rgb sum, sumSquares;
         std::fill(binSum.begin(), binSum.end(), Rgb());

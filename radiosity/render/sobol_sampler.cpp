@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "radiosity/core/stream_tags.h"
+
 namespace rad {
 namespace {
 
@@ -53,7 +55,7 @@ constexpr double kTwoToMinus32 = 1.0 / 4294967296.0;
 }  // namespace
 
 SobolSampler::SobolSampler(uint64_t seed, uint64_t pixel, Rng& rng)
-    : pixelKey_(streamKey(seed, pixel, 0x534f424f4cull)), rng_(rng) {}
+    : pixelKey_(streamKey(seed, pixel, stream_tag::kSobolPixel)), rng_(rng) {}
 
 void SobolSampler::startSample(int index) {
   sample_ = index;
