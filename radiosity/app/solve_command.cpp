@@ -13,6 +13,7 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/render/light_probes.h"
 #include "radiosity/render/render_scene.h"
@@ -49,8 +50,7 @@ std::vector<ProbeSh> solveProbes(const SolveOptions& options, const ProbeOptions
       computeProbes(view, solution.radiosity, points, o.rays, options.seed);
   int inside = 0;
   for (const ProbeSh& p : probes) inside += p.inside;
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = secondsSince(start);
   logInfo("light probes: " + std::to_string(probes.size()) + " (" + std::to_string(inside) +
           " inside geometry), " + std::to_string(o.rays) + " rays each, " + formatNumber(seconds) +
           " s");

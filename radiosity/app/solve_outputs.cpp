@@ -12,6 +12,7 @@
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/peak_memory.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/output/display_radiance.h"
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/output/tone_map.h"
@@ -244,8 +245,7 @@ void writeFiles(const SolveOptions& options, SolveResult& result,
     files.push_back(probesBin.get());
   }
 
-  result.report.times.output =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.report.times.output = secondsSince(start);
   result.report.times.total += result.report.times.output;
   AtomicFile summary((dir / "summary.json").string());
   summary.stream() << summaryJson(options, result, toneMap.exposure).dump(2) << "\n";

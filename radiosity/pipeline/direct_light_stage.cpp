@@ -12,6 +12,7 @@
 #include "radiosity/core/check.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/rng.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/core/stream_tags.h"
 #include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/receiver_points.h"
@@ -304,8 +305,7 @@ void DirectLightStage::apply(RadiosityProblem& problem, const KnownIrradiance* k
     logWarning(
         "the lights reach no surface from its front (all shadowed, behind or outside "
         "their cones): they add no light");
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = secondsSince(start);
   logInfo("direct light: " + std::to_string(lights_.size()) + " light(s) at " + std::to_string(n) +
           " elements" +
           (known ? " (" + std::to_string(reused) + " kept from before the edit)" : std::string()) +

@@ -6,6 +6,7 @@
 #include "radiosity/core/interrupt.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/progress.h"
+#include "radiosity/core/seconds_since.h"
 
 namespace rad {
 
@@ -29,9 +30,7 @@ StopReason iterate(Solver& solver, const IterationLimits& limits,
                    std::vector<std::vector<Rgb>>* bounceTerms) {
   Progress progress("solve (" + solver.name() + ")", 0, "iterations");
   const double startMeasure = std::max(solver.progress(), 1e-300);
-  const auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - limits.start).count();
-  };
+  const auto elapsed = [&] { return secondsSince(limits.start); };
   std::vector<Rgb> previous;
   if (bounceTerms) bounceTerms->push_back(previous = solver.solution());  // B_0 = E
   bool outOfTime = false;

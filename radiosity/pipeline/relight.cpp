@@ -5,6 +5,7 @@
 #include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/iteration.h"
 #include "radiosity/pipeline/kept_factors_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
@@ -113,8 +114,7 @@ SolveResult finishRelight(RelightStart started, KeptFactors kept, const std::str
     solution.scene.lights[l] = scaledLight(solution.scene.lights[l], lightScale[l]);
   report.skip("form factors and the lights' first shot",
               "relight: reused from " + keptPath + ", no ray cast");
-  report.times.total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started.start).count();
+  report.times.total = secondsSince(started.start);
   report.times.solve = report.times.total;
   return result;
 }

@@ -5,6 +5,7 @@
 
 #include "radiosity/core/errors.h"
 #include "radiosity/core/log.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/saved_solution.h"
 #include "radiosity/pipeline/solve_pipeline.h"
 
@@ -24,8 +25,7 @@ SolveResult solveOrReuse(Scene scene, const SolveOptions& options, const Solutio
   }
   saved->report.skip("radiosity solve",
                      "reused the solution saved in " + dir + " (same scene and solve options)");
-  saved->report.times.total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  saved->report.times.total = secondsSince(start);
   return std::move(*saved);
 }
 

@@ -11,6 +11,7 @@
 
 #include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/core/stream_tags.h"
 #include "radiosity/render/adaptive_allocation.h"
 #include "radiosity/render/sobol_sampler.h"
@@ -122,7 +123,7 @@ RenderOutput renderImage(const Camera& camera, const Integrator& integrator,
       storePixelMean(out, x, y, sums.sum[p], sums.squares[p], sums.count[p]);
     }
   out.rays = counts.combine([](RayCounts a, const RayCounts& b) { return a += b; });
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.seconds = secondsSince(start);
   if (progress) progress->finish(std::to_string(out.rays.total()) + " rays");
   return out;
 }

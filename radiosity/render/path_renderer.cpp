@@ -9,6 +9,7 @@
 
 #include "radiosity/core/check.h"
 #include "radiosity/core/progress.h"
+#include "radiosity/core/seconds_since.h"
 #include "radiosity/core/stream_tags.h"
 #include "radiosity/render/sobol_sampler.h"
 
@@ -103,8 +104,7 @@ PathRenderOutput renderPathImage(const Camera& camera, const PathIntegrator& int
   addSplats(out.full, splats.sum, splats.sumSquares, n, paths);
   for (int b = 0; b < bins; ++b)
     addSplats(out.bins[b], splats.binSum[b], splats.binSumSquares[b], n, paths);
-  out.full.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.full.seconds = secondsSince(start);
   if (progress) progress->finish(std::to_string(out.full.rays.total()) + " rays");
   return out;
 }
