@@ -116,7 +116,8 @@ int run(const Args& args) {
   options.scenePath = args.scene;
   options.targetElements = args.elements;
   if (!args.lights.empty()) options.lights.file = args.lights;
-  const Scene scene = loadScene(args.scene, options.lights, options.twoSided);
+  const Scene scene =
+      loadScene(args.scene, options.lights, options.twoSided, options.unreadableTextures);
   const MeshedScene meshed = meshScene(scene, options);
   const PatchMesh& mesh = *meshed.mesh;
   const RayCaster caster(mesh);

@@ -262,7 +262,8 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   const int threads = threadLimit.threads();
   // The scene's UVs are checked before the solve, so a bad layout fails in seconds.
   const auto loadStart = std::chrono::steady_clock::now();
-  Scene scene = loadScene(o.solve.scenePath, o.solve.lights, o.solve.twoSided);
+  Scene scene =
+      loadScene(o.solve.scenePath, o.solve.lights, o.solve.twoSided, o.solve.unreadableTextures);
   if (o.sceneUvs) checkLightmapUvs(scene);
   const double loadSeconds = secondsSince(loadStart);
   // Whether the charts fit is decided before the solve (planLightmap), so a lightmap size that

@@ -31,7 +31,8 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   if (method.needsSolve) {
     if (!solved_) {
       const auto t = Clock::now();
-      Scene scene = loadScene(solve_.scenePath, solve_.lights, solve_.twoSided);
+      Scene scene =
+          loadScene(solve_.scenePath, solve_.lights, solve_.twoSided, solve_.unreadableTextures);
       requireEmitter(scene);
       solved_ = std::make_unique<SolveResult>(solveOrReuse(std::move(scene), solve_, source_));
       for (const SkipNote& note : solved_->report.skipped)  // logged by solveOrReuse
@@ -49,7 +50,8 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
   }
 
   if (!scene_) {
-    scene_ = std::make_unique<Scene>(loadScene(solve_.scenePath, solve_.lights, solve_.twoSided));
+    scene_ = std::make_unique<Scene>(
+        loadScene(solve_.scenePath, solve_.lights, solve_.twoSided, solve_.unreadableTextures));
     requireEmitter(*scene_);
     mesh_ = std::make_unique<PatchMesh>(buildPatchMesh(*scene_));
     skip("radiosity solve", "--method " + method.name + " needs only the scene's triangles");

@@ -69,6 +69,7 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
         {"emitter_elements", emitterElements},
         {"materials", materials},
         {"skipped_degenerate_faces", s.scene.skippedDegenerateFaces},
+        {"texture_fallbacks", s.scene.textureFallbacks},
         {"total_area", mesh.totalArea()},
         {"max_element_area", r.maxArea},
         {"element_size", r.elementSize},

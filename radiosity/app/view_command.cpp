@@ -249,9 +249,9 @@ void runView(const ViewArgs& args, SolveOptions options, const CLI::App& command
 
   options.keepLinks = options.solver == SolverKind::Hierarchical;  // what picking draws
   probes = loadViewProbes(args, args.solutionDir);  // before the solve: a bad file fails at once
-  const SolveResult result =
-      solveOrReuse(loadScene(options.scenePath, options.lights, options.twoSided), options,
-                   {args.solutionDir, ""});
+  const SolveResult result = solveOrReuse(
+      loadScene(options.scenePath, options.lights, options.twoSided, options.unreadableTextures),
+      options, {args.solutionDir, ""});
   const Solution& solution = result.solution;
   cameraFor(options.scenePath);
   const ToneMap toneMap = solutionToneMap(solution);

@@ -79,7 +79,8 @@ nlohmann::json bakeJson(const BakeReport& report) {
                          {"patches", report.patches},
                          {"tone_map_exposure", report.toneMapExposure},
                          {"solve_seconds", report.solveSeconds},
-                         {"reused_saved_solution", report.reusedSavedSolution}};
+                         {"reused_saved_solution", report.reusedSavedSolution},
+                         {"texture_fallbacks", report.textureFallbacks}};
   if (report.lightmap) json["lightmap"] = lightmapJson(*report.lightmap);
   if (report.confidence) json["confidence"] = confidenceJson(*report.confidence);
   if (!report.lightGroups.empty()) json["light_groups"] = lightGroupsJson(report);

@@ -15,36 +15,51 @@
 
 namespace rad {
 
+// Parts of BakeReport, defined before it: std::optional of a nested struct with default member
+// initialisers is not default-constructible inside its enclosing class for clang.
+// The lightmap's layout and texels (none with --no-lightmap).
+struct BakeLightmapFacts {
+  bool sceneUvs = false;
+  size_t charts = 0;
+  int pages = 0, width = 0, height = 0;
+  double texelSize = 0;
+  std::string sizeRule;  // which rule chose the texel size (layoutLightmap)
+  int padding = 0, dilation = 0;
+  size_t covered = 0, conservative = 0, dilated = 0, empty = 0;  // texels by TexelState
+  size_t nextToTwoCharts = 0;  // texels where bilinear filtering bleeds between charts
+  int gatherRays = 0, lightRays = 0;
+  LightmapContent content = LightmapContent::Radiance;
+  double chartSeconds = 0, bakeSeconds = 0;
+};
+
+// How far to trust the texels (the "error" EXR channel).
+struct BakeConfidence {
+  std::string includes;  // which errors the estimate holds
+  ConfidenceSummary summary;
+  double seconds = 0;
+};
+
+// --directional: the L1 SH pages.
+struct BakeDirectional {
+  int rays = 0, pages = 0;
+  double seconds = 0;
+};
+
 struct BakeReport {
   // The solution baked.
   std::string scene;
+  std::vector<std::string> textureFallbacks;  // textures not read: their material's colour used
   int elements = 0, patches = 0;
   double toneMapExposure = 0;  // the 8-bit outputs' exposure
   double solveSeconds = 0;
   bool reusedSavedSolution = false;
 
   // The lightmap's layout and texels (none with --no-lightmap).
-  struct LightmapFacts {
-    bool sceneUvs = false;
-    size_t charts = 0;
-    int pages = 0, width = 0, height = 0;
-    double texelSize = 0;
-    std::string sizeRule;  // which rule chose the texel size (layoutLightmap)
-    int padding = 0, dilation = 0;
-    size_t covered = 0, conservative = 0, dilated = 0, empty = 0;  // texels by TexelState
-    size_t nextToTwoCharts = 0;  // texels where bilinear filtering bleeds between charts
-    int gatherRays = 0, lightRays = 0;
-    LightmapContent content = LightmapContent::Radiance;
-    double chartSeconds = 0, bakeSeconds = 0;
-  };
+  using LightmapFacts = BakeLightmapFacts;
   std::optional<LightmapFacts> lightmap;
 
   // How far to trust the texels (the "error" EXR channel).
-  struct Confidence {
-    std::string includes;  // which errors the estimate holds
-    ConfidenceSummary summary;
-    double seconds = 0;
-  };
+  using Confidence = BakeConfidence;
   std::optional<Confidence> confidence;
 
   // --light-groups: one layer per group, in the solution's order.
@@ -55,10 +70,7 @@ struct BakeReport {
   std::vector<Group> lightGroups;
 
   // --directional: the L1 SH pages.
-  struct Directional {
-    int rays = 0, pages = 0;
-    double seconds = 0;
-  };
+  using Directional = BakeDirectional;
   std::optional<Directional> directional;
 
   std::vector<SkipNote> skipped;

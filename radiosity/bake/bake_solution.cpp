@@ -35,6 +35,7 @@ BakeResult interpolateVertices(const Solution& solution, const BakeSpec& spec) {
 void reportSolution(const SolveResult& solved, const BakeSpec& spec, BakeResult& result) {
   BakeReport& report = result.report;
   report.scene = spec.scenePath;
+  report.textureFallbacks = solved.solution.scene.textureFallbacks;
   report.elements = solved.solution.mesh->elementCount();
   report.patches = solved.solution.mesh->patchCount();
   report.toneMapExposure = result.toneMap.exposure;

@@ -367,7 +367,8 @@ UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
   SolveReport& report = started.result.report;
   const ThreadLimit threads = limitSolveThreads(options, report);
   const auto t = Clock::now();
-  solution.scene = loadScene(options.scenePath, options.lights, options.twoSided);
+  solution.scene =
+      loadScene(options.scenePath, options.lights, options.twoSided, options.unreadableTextures);
   report.times.load = secondsSince(t);
   checkSceneLimits(solution.scene);
   requireEmitter(solution.scene);

@@ -56,7 +56,9 @@ void addKeptFirstShot(const KeptFactors& kept, const std::vector<Rgb>& lightScal
 }  // namespace
 
 Scene loadKeptScene(const KeptFactors& kept) {
-  Scene scene = loadScene(kept.scenePath);  // with the scene's own lights (glTF), as solved
+  // With the scene's own lights (glTF), as solved; a texture the solve could not read falls back
+  // to its material's colour here too.
+  Scene scene = loadScene(kept.scenePath, UnreadableTextures::UseMaterialColour);
   for (Light& light : findSceneLights(kept.scenePath, kept.lightInput, false))
     scene.lights.push_back(std::move(light));
   applyTwoSidedInput(scene, kept.options.twoSided);

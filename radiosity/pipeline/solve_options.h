@@ -6,6 +6,7 @@
 
 #include "radiosity/core/named_values.h"
 #include "radiosity/scene/lights.h"
+#include "radiosity/scene/scene.h"
 #include "radiosity/scene/two_sided.h"
 #include "radiosity/solvers/solver_factory.h"
 
@@ -25,6 +26,9 @@ struct SolveOptions {
   std::string outputDir;
   LightInput lights;       // scene input: --lights FILE (default the sidecar), --sky, --sun
   TwoSidedInput twoSided;  // scene input: --two-sided, --two-sided-materials
+  // scene input: a texture file that cannot be read is a warning and a fallback, or with --strict
+  // an error (scene/scene.h).
+  UnreadableTextures unreadableTextures = UnreadableTextures::UseMaterialColour;
   SolverKind solver = SolverKind::Progressive;
   int raysPerElement = 1024;  // hemisphere: rays per element row (hierarchical: per receiver)
   double linkEpsilon = 0.01;  // hierarchical: most light a link carries / (emitted power/elements)

@@ -80,7 +80,8 @@ SolveStrategy solveStrategy(const SolveOptions& options) {
 
 SolveResult runSolve(const SolveOptions& options) {
   const auto start = Clock::now();
-  Scene scene = loadScene(options.scenePath, options.lights, options.twoSided);
+  Scene scene =
+      loadScene(options.scenePath, options.lights, options.twoSided, options.unreadableTextures);
   const double loadSeconds = secondsSince(start);
   SolveResult result = solveScene(std::move(scene), options);
   result.report.times.load = loadSeconds;

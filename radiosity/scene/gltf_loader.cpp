@@ -285,8 +285,9 @@ const tinygltf::Value* extension(const tinygltf::ExtensionMap& map, const char* 
 
 class MaterialReader {
  public:
-  MaterialReader(const tinygltf::Model& model, const std::string& path, Scene& scene)
-      : model_(model), path_(path), scene_(scene) {}
+  MaterialReader(const tinygltf::Model& model, const std::string& path, Scene& scene,
+                 UnreadableTextures unreadable)
+      : model_(model), path_(path), scene_(scene), unreadable_(unreadable) {}
 
   Material read(int index) {
     const tinygltf::Material& m = model_.materials[index];
@@ -397,17 +398,26 @@ class MaterialReader {
       source = (fs::path(path_).parent_path() / percentDecoded(img.uri)).string();
     }
     if (bytes.empty()) fail(path_, imagePointer, "the image has no data");
-    scene_.textures.push_back(
-        decodeTexture(bytes.data(), bytes.size(), source, TextureEncoding::Srgb));
-    const int id = static_cast<int>(scene_.textures.size()) - 1;
-    decoded_[image] = id;
+    int id = -1;
+    try {
+      scene_.textures.push_back(
+          decodeTexture(bytes.data(), bytes.size(), source, TextureEncoding::Srgb));
+      id = static_cast<int>(scene_.textures.size()) - 1;
+    } catch (const InputError& e) {
+      if (unreadable_ == UnreadableTextures::Refuse) throw;
+      const std::string what = path_ + ": " + imagePointer + ": " + e.what();
+      logWarning(what + ": using the material's own colour instead (--strict makes this an error)");
+      scene_.textureFallbacks.push_back(what);
+    }
+    decoded_[image] = id;  // warned once per image
     return id;
   }
 
   const tinygltf::Model& model_;
   const std::string& path_;
   Scene& scene_;
-  std::map<int, int> decoded_;  // glTF image → Scene texture
+  UnreadableTextures unreadable_;
+  std::map<int, int> decoded_;  // glTF image → Scene texture (-1: not read)
 };
 
 Material defaultMaterial(const std::string& path) {
@@ -597,12 +607,12 @@ std::optional<int> lightOf(const tinygltf::Node& node) {
 
 }  // namespace
 
-Scene loadGltfScene(const std::string& path) {
+Scene loadGltfScene(const std::string& path, UnreadableTextures unreadable) {
   const tinygltf::Model model = parseModel(path);
   Scene scene;
   scene.sourcePath = path;
 
-  MaterialReader reader(model, path, scene);
+  MaterialReader reader(model, path, scene, unreadable);
   std::vector<int> materialIds;
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     scene.materials.push_back(reader.read(static_cast<int>(i)));

@@ -21,8 +21,10 @@ constexpr double kLumensPerWatt = 683.0;
 // dielectrics), TEXCOORD_0/1 with v flipped to point up, and KHR_lights_punctual lights (see
 // docs/formats.md). Throws InputError naming the file and the JSON pointer of what is wrong
 // (missing buffer or image file, ranges, indices, non-finite positions, unsupported required
-// extensions, undecodable images).
-Scene loadGltfScene(const std::string& path);
+// extensions; an image it cannot decode, unless `unreadable` is UseMaterialColour: then a
+// warning and a fallback, scene.h).
+Scene loadGltfScene(const std::string& path,
+                    UnreadableTextures unreadable = UnreadableTextures::Refuse);
 
 // Whether a node of the default scene carries a KHR_lights_punctual light (without reading the
 // geometry or decoding images): for the checks that run before a scene is loaded.

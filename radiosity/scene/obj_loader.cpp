@@ -40,8 +40,8 @@ std::string lineList(const std::vector<int>& lines) {
 // map_Kd, when it has transparent texels) cuts the surface out.
 void attachTextures(Material& material, const MaterialSource& source, ObjTextureLoader& loader,
                     const std::vector<Texture>& textures) {
-  if (source.diffuseMap.present()) {
-    material.diffuseTexture = loader.colour(source.diffuseMap);
+  if (source.diffuseMap.present() &&
+      (material.diffuseTexture = loader.colour(source.diffuseMap)) >= 0) {
     material.alphaFromDiffuse = hasTransparentTexel(textures[material.diffuseTexture]);
     // Maya and 3ds Max write Kd 0 0 0 with a map_Kd to mean "the texture alone": read literally
     // it would make the surface black, which no one who attached a texture means.
@@ -52,8 +52,8 @@ void attachTextures(Material& material, const MaterialSource& source, ObjTexture
               "exporters that write this mean");
     }
   }
-  if (source.emissionMap.present()) {
-    material.emissionTexture = loader.colour(source.emissionMap);
+  if (source.emissionMap.present() &&
+      (material.emissionTexture = loader.colour(source.emissionMap)) >= 0) {
     if (material.emission.maxComponent() == 0)
       logWarning(source.emissionMap.file + ":" + std::to_string(source.emissionMap.line) +
                  ": material '" + source.name +
@@ -211,7 +211,7 @@ std::vector<ScenePolygon> readPolygons(const std::vector<tinyobj::shape_t>& shap
 
 }  // namespace
 
-Scene loadObjScene(const std::string& objPath) {
+Scene loadObjScene(const std::string& objPath, UnreadableTextures unreadable) {
   const ObjLineCheck check = checkObjFile(objPath);
 
   tinyobj::ObjReaderConfig config;
@@ -240,7 +240,7 @@ Scene loadObjScene(const std::string& objPath) {
                          " materials, the MTL libraries define " +
                          std::to_string(check.materials.size()));
   }
-  ObjTextureLoader textureLoader(&scene.textures);
+  ObjTextureLoader textureLoader(&scene.textures, unreadable, &scene.textureFallbacks);
   for (std::size_t i = 0; i < check.materials.size(); ++i) {
     scene.materials.push_back(convertMaterial(loaded[i], check.materials[i]));
     attachTextures(scene.materials.back(), check.materials[i], textureLoader, scene.textures);

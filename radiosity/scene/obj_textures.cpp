@@ -18,7 +18,23 @@ int ObjTextureLoader::load(const TextureMapStatement& map, bool coverage) {
   const auto found = index_.find({key.string(), coverage});
   if (found != index_.end()) return found->second;
 
+  int index = -1;
+  try {
+    textures_->push_back(read(map, coverage));
+    index = static_cast<int>(textures_->size()) - 1;
+  } catch (const InputError& e) {
+    if (unreadable_ == UnreadableTextures::Refuse) throw;
+    logWarning(std::string(e.what()) +
+               ": using the material's own colour instead (--strict makes this an error)");
+    fallbacks_->push_back(e.what());
+  }
+  index_.emplace(std::make_pair(key.string(), coverage), index);  // warned once per file
+  return index;
+}
+
+Texture ObjTextureLoader::read(const TextureMapStatement& map, bool coverage) const {
   // Only a regular file: a device or a pipe named by mistake (or by a fuzzer) would never end.
+  std::error_code ec;
   if (!std::filesystem::is_regular_file(map.path, ec))
     throw InputError(map.file, map.line, "texture: " + map.path + ": cannot open the texture file");
   Texture texture;
@@ -34,10 +50,7 @@ int ObjTextureLoader::load(const TextureMapStatement& map, bool coverage) {
   }
   logDebug("texture " + map.path + ": " + std::to_string(texture.width) + "×" +
            std::to_string(texture.height) + " texels");
-  textures_->push_back(std::move(texture));
-  const int index = static_cast<int>(textures_->size()) - 1;
-  index_.emplace(std::make_pair(key.string(), coverage), index);
-  return index;
+  return texture;
 }
 
 bool hasTransparentTexel(const Texture& texture) {

@@ -28,6 +28,14 @@ struct ScenePolygon {
   int backSideOf = -1;
 };
 
+// What loading does with a texture file it cannot read (missing, or not an image it decodes).
+enum class UnreadableTextures {
+  // A warning naming the file and line (or JSON pointer), the material's own colour used instead,
+  // and the texture listed in Scene::textureFallbacks: Blender and game engines go on too.
+  UseMaterialColour,
+  Refuse,  // an InputError at that line (--strict)
+};
+
 // A validated scene: every polygon has >= 3 distinct, in-range vertices and non-zero area,
 // every material has finite values with diffuse in [0, 1] and emission >= 0.
 struct Scene {
@@ -40,6 +48,9 @@ struct Scene {
 
   int skippedDegenerateFaces = 0;    // zero-area or repeated-vertex faces, skipped with a warning
   bool usedDefaultMaterial = false;  // some faces had no `usemtl`
+  // Each texture not read ("file.mtl:5: texture: x.png: cannot open the texture file"), its
+  // material's own colour used instead (UnreadableTextures::UseMaterialColour).
+  std::vector<std::string> textureFallbacks;
 
   int emitterCount() const;     // polygons whose material emits
   bool hasSpecular() const;     // any polygon with a mirror or dielectric material

@@ -21,7 +21,7 @@ struct SceneFormat {
   const char* name;       // for messages: "binary glTF"
   const char* extension;  // lower case, with the dot
   Content content;        // what its first bytes look like (Text: no magic; any text)
-  Scene (*load)(const std::string& path);  // nullptr: recognised, not read
+  Scene (*load)(const std::string& path, UnreadableTextures);  // nullptr: recognised, not read
 };
 
 const SceneFormat kFormats[] = {
@@ -78,8 +78,9 @@ std::string extensionOf(const std::string& path) {
 
 }  // namespace
 
-Scene loadScene(const std::string& path, const LightInput& lights, const TwoSidedInput& twoSided) {
-  Scene scene = loadScene(path);
+Scene loadScene(const std::string& path, const LightInput& lights, const TwoSidedInput& twoSided,
+                UnreadableTextures unreadable) {
+  Scene scene = loadScene(path, unreadable);
   // The scene's own lights (glTF's KHR_lights_punctual) come first, then the lights file's.
   for (Light& light : findSceneLights(path, lights)) scene.lights.push_back(std::move(light));
   applyTwoSidedInput(scene, twoSided);
@@ -101,7 +102,7 @@ std::string readableSceneFormats() {
   return list;
 }
 
-Scene loadScene(const std::string& path) {
+Scene loadScene(const std::string& path, UnreadableTextures unreadable) {
   std::string head;
   {
     std::ifstream in(path, std::ios::binary);
@@ -131,7 +132,7 @@ Scene loadScene(const std::string& path) {
     unsupported(path, std::string(byExtension->name) +
                           " by its extension, but its first bytes are not " + byExtension->name);
   if (!byExtension->load) unsupported(path, byExtension->name);
-  return byExtension->load(path);
+  return byExtension->load(path, unreadable);
 }
 
 }  // namespace rad

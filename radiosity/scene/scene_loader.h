@@ -16,14 +16,18 @@ namespace rad {
 //   - "unsupported scene format (<what was recognised>): radiosity reads <formats>" for a format
 //     radiosity does not read, an unknown extension, or content that contradicts the extension
 //     (an .obj that holds binary glTF or PLY);
-//   - whatever the format's loader throws for bad content.
-Scene loadScene(const std::string& path);
+//   - whatever the format's loader throws for bad content (a texture it cannot read included,
+//     unless `unreadable` says to use the material's colour: scene.h).
+Scene loadScene(const std::string& path,
+                UnreadableTextures unreadable = UnreadableTextures::Refuse);
 
 // The scene with its lights (findSceneLights, lights.h) and its two-sided surfaces (the file's
 // own, e.g. glTF doubleSided, plus `twoSided`), each given its back side (addBackSides): the one
 // loader of every command that solves or renders.
+// The commands pass SolveOptions::unreadableTextures (--strict); the default here is strict.
 Scene loadScene(const std::string& path, const LightInput& lights,
-                const TwoSidedInput& twoSided = {});
+                const TwoSidedInput& twoSided = {},
+                UnreadableTextures unreadable = UnreadableTextures::Refuse);
 
 // Whether the scene file carries lights of its own (glTF's KHR_lights_punctual), which
 // loadScene(path, lights) puts before the lights file's; false for formats without lights.

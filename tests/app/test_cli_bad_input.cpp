@@ -9,6 +9,8 @@
 
 #include "tests/support/run_command.h"
 
+#include <nlohmann/json.hpp>
+
 namespace rad {
 namespace {
 
@@ -18,6 +20,7 @@ struct BadCase {
   std::string file;      // scene to load
   std::string location;  // "file:line:" expected in the message
   std::string phrase;
+  std::string options = "";  // more arguments (--strict: an unreadable texture is an error)
 };
 
 // Readable names in test listings instead of gtest's byte dump.
@@ -30,7 +33,8 @@ TEST_P(BadInput, FailsClearlyAndWritesNothing) {
   const auto out = testing::scratchPath(
       "bad_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + c.file);
   const auto result =
-      testing::runRadiosity("solve " + kBad + c.file + " --out " + out.string() + " --rays 16");
+      testing::runRadiosity("solve " + kBad + c.file + " --out " + out.string() + " --rays 16 " +
+                            c.options);
   EXPECT_EQ(result.exitCode, 1) << result.stderrText;
   EXPECT_NE(result.stderrText.find("error: "), std::string::npos) << result.stderrText;
   EXPECT_NE(result.stderrText.find(c.location), std::string::npos) << result.stderrText;
@@ -53,8 +57,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"bad_index.obj", "bad_index.obj:14:", "out of range"},
         BadCase{"short_face.obj", "short_face.obj:14:", "at least 3"},
         BadCase{"does_not_exist.obj", "does_not_exist.obj", "cannot open"},
-        BadCase{"texture_missing.obj", "texture_missing.mtl:5:", "cannot open the texture file"},
-        BadCase{"texture_corrupt.obj", "texture_corrupt.mtl:5:", "corrupt.png"}),
+        BadCase{"texture_missing.obj", "texture_missing.mtl:5:", "cannot open the texture file",
+                "--strict"},
+        BadCase{"texture_corrupt.obj", "texture_corrupt.mtl:5:", "corrupt.png", "--strict"}),
     [](const ::testing::TestParamInfo<BadCase>& info) {
       std::string name = info.param.file.substr(0, info.param.file.find('.'));
       for (char& ch : name)
@@ -63,6 +68,28 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 const std::string kCornell = std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cornell_box.obj";
+
+// Without --strict a texture that cannot be read is what Blender and engines make of it: a
+// warning naming the MTL line, the material's own colour (Kd) instead, and the file listed in
+// summary.json; the solve goes on and writes its outputs.
+TEST(BadInput, AnUnreadableTextureFallsBackToItsMaterialsColourWithAWarning) {
+  for (const std::string scene : {"texture_missing", "texture_corrupt"}) {
+    const auto out = testing::scratchPath("texture_fallback_" + scene);
+    const auto result =
+        testing::runRadiosity("solve " + kBad + scene + ".obj --out " + out.string() + " --rays 16");
+    ASSERT_EQ(result.exitCode, 0) << result.stderrText;
+    const std::string line = scene + ".mtl:5:";
+    EXPECT_NE(result.stderrText.find(line), std::string::npos) << result.stderrText;
+    EXPECT_NE(result.stderrText.find("using the material's own colour"), std::string::npos)
+        << result.stderrText;
+    std::ifstream in(out / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(in);
+    const nlohmann::json& fallbacks = summary["scene"]["texture_fallbacks"];
+    ASSERT_EQ(fallbacks.size(), 1u) << fallbacks;
+    EXPECT_NE(fallbacks[0].get<std::string>().find(line), std::string::npos) << fallbacks;
+    std::filesystem::remove_all(out);
+  }
+}
 
 // A scene in a format radiosity does not read (here PLY): named as such, exit 1, no output
 // directory.

@@ -418,6 +418,32 @@ TEST(GltfLoader, UnsupportedRequiredExtensionButUsedOnesAreOnlyNoted) {
               "/extensionsRequired/1: required extension KHR_draco_mesh_compression");
 }
 
+// Asked to use the material's colour (the command line's default), an image that does not decode
+// is a warning at its JSON pointer, no texture and one fallback; strict, an error as above.
+TEST(GltfLoader, ACorruptImageCanFallBackToTheMaterialsColour) {
+  tinygltf::Model model = quadModel();
+  tinygltf::Image image;
+  image.uri = "corrupt_fallback.png";
+  model.images.push_back(image);
+  tinygltf::Texture texture;
+  texture.source = 0;
+  model.textures.push_back(texture);
+  model.materials[0].pbrMetallicRoughness.baseColorTexture.index = 0;
+  std::ofstream(scratchDir() / "corrupt_fallback.png") << "not a png";
+  const auto path = write(model, "corrupt_fallback.gltf");
+  ::testing::internal::CaptureStderr();
+  const Scene scene = loadGltfScene(path, UnreadableTextures::UseMaterialColour);
+  const std::string log = ::testing::internal::GetCapturedStderr();
+  ASSERT_FALSE(scene.materials.empty());
+  EXPECT_EQ(scene.materials[0].diffuseTexture, -1);
+  EXPECT_FALSE(scene.materials[0].alphaFromDiffuse);
+  ASSERT_EQ(scene.textureFallbacks.size(), 1u);
+  EXPECT_NE(scene.textureFallbacks[0].find("/images/0"), std::string::npos)
+      << scene.textureFallbacks[0];
+  EXPECT_NE(log.find("/images/0"), std::string::npos) << log;
+  EXPECT_NE(errorOf(path).find("corrupt_fallback.png"), std::string::npos);  // strict by default
+}
+
 TEST(GltfLoader, MissingAndCorruptImages) {
   tinygltf::Model model = quadModel();
   tinygltf::Image image;

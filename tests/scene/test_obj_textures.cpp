@@ -170,6 +170,29 @@ TEST_F(ObjTextures, FacesWithoutTextureCoordinatesUseTheFactorsWithAWarning) {
       << log;
 }
 
+// Asked to use the material's colour (the command line's default), a missing map is a warning at
+// its MTL line, no texture, the factors as written, and one fallback however many maps name it.
+TEST_F(ObjTextures, AMissingTextureCanFallBackToTheMaterialsColour) {
+  const std::string obj = scene(
+      "newmtl a\nKd 0.25 0.5 0.75\nmap_Kd maps/absent.png\nnewmtl b\nKd 0.1 0.1 0.1\n"
+      "map_Kd maps/absent.png\n",
+      {"a", "b"});
+  ::testing::internal::CaptureStderr();
+  const Scene s = loadObjScene(obj, UnreadableTextures::UseMaterialColour);
+  const std::string log = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(s.materials.size(), 2u);
+  EXPECT_EQ(s.materials[0].diffuseTexture, -1);
+  EXPECT_EQ(s.materials[1].diffuseTexture, -1);
+  EXPECT_FALSE(s.materials[0].alphaFromDiffuse);
+  EXPECT_DOUBLE_EQ(s.materials[0].diffuse[2], 0.75);
+  EXPECT_TRUE(s.textures.empty());
+  ASSERT_EQ(s.textureFallbacks.size(), 1u);
+  EXPECT_NE(s.textureFallbacks[0].find(mtlPath() + ":3:"), std::string::npos)
+      << s.textureFallbacks[0];
+  EXPECT_NE(log.find(mtlPath() + ":3:"), std::string::npos) << log;
+  EXPECT_NE(log.find("--strict"), std::string::npos) << log;
+}
+
 // Expects the InputError of loading `obj` to name the MTL file and the map_* line.
 void expectErrorAt(const std::string& obj, const std::string& mtl, int line,
                    const std::string& phrase) {

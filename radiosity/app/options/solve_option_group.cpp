@@ -57,6 +57,11 @@ void addSceneInput(CLI::App& command, SolveOptions& options) {
                   "These materials (comma-separated names) are two-sided")
       ->delimiter(',')
       ->type_name("NAME,...");
+  command.add_flag_callback(
+      "--strict", [&options] { options.unreadableTextures = UnreadableTextures::Refuse; },
+      "A texture file that cannot be read is an error (default: a warning naming its MTL line or "
+      "glTF image, the material's own colour used instead, and the file listed in the "
+      "outputs' JSON as texture_fallbacks)");
 }
 
 void addSolve(CLI::App& command, SolveOptions& options) {
