@@ -5,11 +5,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "tests/support/run_command.h"
-
-#include <nlohmann/json.hpp>
 
 namespace rad {
 namespace {
@@ -32,9 +31,8 @@ TEST_P(BadInput, FailsClearlyAndWritesNothing) {
   const BadCase& c = GetParam();
   const auto out = testing::scratchPath(
       "bad_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + c.file);
-  const auto result =
-      testing::runRadiosity("solve " + kBad + c.file + " --out " + out.string() + " --rays 16 " +
-                            c.options);
+  const auto result = testing::runRadiosity("solve " + kBad + c.file + " --out " + out.string() +
+                                            " --rays 16 " + c.options);
   EXPECT_EQ(result.exitCode, 1) << result.stderrText;
   EXPECT_NE(result.stderrText.find("error: "), std::string::npos) << result.stderrText;
   EXPECT_NE(result.stderrText.find(c.location), std::string::npos) << result.stderrText;
@@ -75,8 +73,8 @@ const std::string kCornell = std::string(RADIOSITY_DATA_DIR) + "/cornell_box/cor
 TEST(BadInput, AnUnreadableTextureFallsBackToItsMaterialsColourWithAWarning) {
   for (const std::string scene : {"texture_missing", "texture_corrupt"}) {
     const auto out = testing::scratchPath("texture_fallback_" + scene);
-    const auto result =
-        testing::runRadiosity("solve " + kBad + scene + ".obj --out " + out.string() + " --rays 16");
+    const auto result = testing::runRadiosity("solve " + kBad + scene + ".obj --out " +
+                                              out.string() + " --rays 16");
     ASSERT_EQ(result.exitCode, 0) << result.stderrText;
     const std::string line = scene + ".mtl:5:";
     EXPECT_NE(result.stderrText.find(line), std::string::npos) << result.stderrText;
