@@ -123,136 +123,130 @@ void checkRenderOptions(const CLI::App& command, RenderCommandOptions& o,
   finishSolveOptions(command, o.solve);
 }
 
-void runRender(const CLI::App& command, RenderCommandOptions& o) {
-  const auto start = Clock::now();
-  const RenderMethod& method = findRenderMethod(o.method);
-  checkRenderOptions(command, o, method);
-  // The path expression is parsed before any long work: a malformed one fails at once.
-  std::optional<ExpressionBinning> pathFilter;
-  if (!o.paths.empty()) pathFilter.emplace(PathExpression::parse(o.paths));
-  const bool radiosity = method.needsSolve;
-  const bool separateBounces = o.bouncesSeparate.has_value();
-  const int spp = o.spp > 0 ? o.spp : method.defaultSpp;
-  // Before any long work: a bad camera or motion description fails at once.
-  const ResolvedCamera resolved = resolveCamera(o.camera, o.solve.scenePath);
-  const Camera& camera = resolved.camera;
-  const std::string& cameraSource = resolved.file;
-  RenderWorld world(o.solve, cameraSource,
-                    {o.solutionDir, o.freshSolve ? std::string() : o.solve.outputDir});
-
-  const ThreadLimit threadLimit(o.solve.threads);
-  const int threads = threadLimit.threads();
-  nlohmann::json skipped = nlohmann::json::array();
-  auto skip = [&](const std::string& what, const std::string& why) {
+// Work a render skipped, with why: the log and render.json's "skipped".
+class SkipList {
+ public:
+  void add(const std::string& what, const std::string& why) {
     logInfo("skipped: " + what + " (" + why + ")");
-    skipped.push_back({{"what", what}, {"why", why}});
-  };
+    json_.push_back({{"what", what}, {"why", why}});
+  }
+  void add(const std::vector<SkipNote>& notes) {
+    for (const SkipNote& s : notes) json_.push_back({{"what", s.what}, {"why", s.why}});
+  }
+  const nlohmann::json& json() const { return json_; }
 
-  // The scene, its mesh and BVH, and (for methods that need it) the radiosity solution.
-  const RenderWorld::View view = world.viewFor(method);
-  const RenderScene& renderScene = *view.scene;
-  const PatchMesh& mesh = renderScene.mesh();
-  for (const SkipNote& s : world.skipped()) skipped.push_back({{"what", s.what}, {"why", s.why}});
-  if (!renderScene.hasSpecular())
-    skip("specular branch", "the scene has no mirror or glass material");
+ private:
+  nlohmann::json json_ = nlohmann::json::array();
+};
 
-  std::unique_ptr<Integrator> integrator =
-      method.makeIntegrator(MethodInputs{renderScene, view.radiosity, o.gather, &camera,
-                                         parseName(misHeuristicTable(), o.mis, "--mis")});
-  if (radiosity && o.gather.gatherRays == 0)
-    skip("final gather", o.gather.indirectFromSolution()
-                             ? "--gather 0 --light-rays N: the indirect light is the solution's"
-                             : "--gather 0: interpolated radiosity preview");
-  if (o.method == "bdpt" && camera.lensRadius > 0)
-    skip("light tracing (t = 1)", "it needs a pinhole camera (lens radius 0)");
-  RenderSettings settings;
-  settings.samplesPerPixel = spp;
-  settings.adaptive = o.adaptive;
-  settings.seed = o.solve.seed;
-  // Path types and Neumann terms: images beside the main one (written as bounce_*.exr).
-  std::vector<ImageRgb> bounceImages;
+// The image, and for --paths or --bounces-separate the images beside it (bounce_*.exr).
+struct RenderedImages {
   RenderOutput render;
-  const auto* pathIntegrator = dynamic_cast<const PathIntegrator*>(integrator.get());
-  if (pathIntegrator && (pathFilter || separateBounces)) {
+  std::vector<ImageRgb> bounces;
+};
+
+// Renders the image with the method's integrator: through the path binning for --paths and the
+// path methods' --bounces-separate, else the image alone, with radiosity's Neumann terms each
+// shown by its interpolated eye pass.
+RenderedImages renderImages(const RenderCommandOptions& o, RenderWorld& world,
+                            const RenderScene& renderScene, const Integrator& integrator,
+                            const Camera& camera, const RenderSettings& settings,
+                            const std::optional<ExpressionBinning>& pathFilter, bool radiosity,
+                            SkipList& skipped) {
+  RenderedImages out;
+  const auto* pathIntegrator = dynamic_cast<const PathIntegrator*>(&integrator);
+  if (pathIntegrator && (pathFilter || o.bouncesSeparate)) {
     std::optional<BounceBinning> bounceBins;
-    if (separateBounces) bounceBins.emplace(*o.bouncesSeparate);
+    if (o.bouncesSeparate) bounceBins.emplace(*o.bouncesSeparate);
     const PathBinning* binning = pathFilter   ? static_cast<const PathBinning*>(&*pathFilter)
                                  : bounceBins ? static_cast<const PathBinning*>(&*bounceBins)
                                               : nullptr;
-    PathRenderOutput out = renderPathImage(camera, *pathIntegrator, settings, binning);
-    render = std::move(out.full);
+    PathRenderOutput paths = renderPathImage(camera, *pathIntegrator, settings, binning);
+    out.render = std::move(paths.full);
     if (pathFilter) {  // the main image holds the matching paths only
-      render.image = std::move(out.bins[0].image);
-      render.variance = std::move(out.bins[0].variance);
+      out.render.image = std::move(paths.bins[0].image);
+      out.render.variance = std::move(paths.bins[0].variance);
     }
     if (bounceBins)
-      for (RenderOutput& b : out.bins) bounceImages.push_back(std::move(b.image));
-  } else {
-    render = renderMethodImage(camera, *integrator, settings);
-    if (separateBounces && radiosity) {
-      // The eye pass of each term: its interpolated B_k/π at the first diffuse hit (gather 0),
-      // seen through mirrors and glass; linear in B, so the terms sum to the --gather 0 image.
-      RenderSettings quiet = settings;
-      quiet.showProgress = false;
-      for (const std::vector<Rgb>& term : world.solved()->solution.bounceTerms) {
-        const FinalGather eyePass(renderScene, term, FinalGatherOptions{0});
-        bounceImages.push_back(renderImage(camera, eyePass, quiet).image);
-      }
-      if (o.gather.gatherRays > 0)
-        skip("final gather in the bounce_* images",
-             "each Neumann term is shown by the interpolated preview (--gather 0), which they sum "
-             "to");
-    }
+      for (RenderOutput& bin : paths.bins) out.bounces.push_back(std::move(bin.image));
+    return out;
   }
-  if (render.rays.gathersSkipped > 0)
-    skip("gathers at " + std::to_string(render.rays.gathersSkipped) + " eye-ray hits",
-         "the surface hit reflects nothing (ρ = 0): its radiance is its Ke");
-  const double solveSeconds = world.solveSeconds(), bvhSeconds = world.bvhSeconds();
+  out.render = renderMethodImage(camera, integrator, settings);
+  if (o.bouncesSeparate && radiosity) {
+    // The eye pass of each term: its interpolated B_k/π at the first diffuse hit (gather 0),
+    // seen through mirrors and glass; linear in B, so the terms sum to the --gather 0 image.
+    RenderSettings quiet = settings;
+    quiet.showProgress = false;
+    for (const std::vector<Rgb>& term : world.solved()->solution.bounceTerms) {
+      const FinalGather eyePass(renderScene, term, FinalGatherOptions{0});
+      out.bounces.push_back(renderImage(camera, eyePass, quiet).image);
+    }
+    if (o.gather.gatherRays > 0)
+      skipped.add("final gather in the bounce_* images",
+                  "each Neumann term is shown by the interpolated preview (--gather 0), which "
+                  "they sum to");
+  }
+  return out;
+}
 
-  // Outputs: EXR (linear radiance), PNG (tone-mapped), JSON (report); renamed together at the end.
-  auto t = Clock::now();
-  throwIfInterrupted();
-  OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
-  ensureDirectory(o.solve.outputDir);
-  const std::filesystem::path dir(o.solve.outputDir);
-  // Auto exposure from the lit surfaces in view: emitter and sky pixels do not set it.
-  const ToneMap toneMap = o.exposure.toneMap([&] {
-    return ToneMap::autoExposure(render.image.pixels, exposureWeights(camera, renderScene));
-  });
-  AtomicPath exr((dir / "render.exr").string());
-  writeExr(exr.tempPath(), render.image);
-  AtomicPath png((dir / "render.png").string());
-  writePng(png.tempPath(), render.image, toneMap);
-  // bounce_k: the term T^k L_e; bounce_sum_k: the terms 0..k. PNGs share the main exposure.
-  std::vector<std::unique_ptr<AtomicPath>> bounceFiles;
-  nlohmann::json bounceNames = nlohmann::json::array();
+// render.exr (linear radiance) and render.png (tone-mapped) under temporary names, and for each
+// term k bounce_k (the term T^k L_e) and bounce_sum_k (the terms 0..k), the PNGs at the main
+// exposure. Returns the bounce images' names; `files` takes the temporary files.
+nlohmann::json writeImages(const std::filesystem::path& dir, const RenderedImages& images,
+                           const Camera& camera, const ToneMap& toneMap,
+                           std::vector<std::unique_ptr<AtomicPath>>& files) {
+  auto add = [&](const std::string& name, const ImageRgb& image) {
+    files.push_back(std::make_unique<AtomicPath>((dir / (name + ".exr")).string()));
+    writeExr(files.back()->tempPath(), image);
+    files.push_back(std::make_unique<AtomicPath>((dir / (name + ".png")).string()));
+    writePng(files.back()->tempPath(), image, toneMap);
+  };
+  add("render", images.render.image);
+  nlohmann::json names = nlohmann::json::array();
   ImageRgb runningSum(camera.width, camera.height);
-  for (size_t k = 0; k < bounceImages.size(); ++k) {
+  for (size_t k = 0; k < images.bounces.size(); ++k) {
     for (size_t p = 0; p < runningSum.pixels.size(); ++p)
-      runningSum.pixels[p] += bounceImages[k].pixels[p];
+      runningSum.pixels[p] += images.bounces[k].pixels[p];
     for (const auto& [stem, image] :
-         {std::pair<std::string, const ImageRgb*>{"bounce_", &bounceImages[k]},
+         {std::pair<std::string, const ImageRgb*>{"bounce_", &images.bounces[k]},
           {"bounce_sum_", &runningSum}}) {
-      const std::string name = stem + std::to_string(k);
-      bounceFiles.push_back(std::make_unique<AtomicPath>((dir / (name + ".exr")).string()));
-      writeExr(bounceFiles.back()->tempPath(), *image);
-      bounceFiles.push_back(std::make_unique<AtomicPath>((dir / (name + ".png")).string()));
-      writePng(bounceFiles.back()->tempPath(), *image, toneMap);
-      bounceNames.push_back(name);
+      add(stem + std::to_string(k), *image);
+      names.push_back(stem + std::to_string(k));
     }
   }
+  return names;
+}
+
+// What render.json says beyond the images' own figures: the method and its paths, the camera,
+// the sampling, rays and times, the mean radiance and its noise, what was skipped.
+struct RenderFacts {
+  const RenderMethod& method;
+  const Integrator& integrator;
+  const Camera& camera;
+  const RenderSettings& settings;
+  const RenderOutput& render;
+  const ToneMap& toneMap;
+  int elements = 0;  // of the mesh the image was rendered from
+  int threads = 0;
+  double solveSeconds = 0, bvhSeconds = 0, outputSeconds = 0, totalSeconds = 0;
+};
+
+nlohmann::json renderReport(const RenderCommandOptions& o, const RenderFacts& f,
+                            const RenderWorld& world, const nlohmann::json& bounceNames,
+                            const SkipList& skipped) {
+  const bool radiosity = f.method.needsSolve;
+  const Camera& camera = f.camera;
+  const RenderOutput& render = f.render;
+  const int spp = f.settings.samplesPerPixel;
   Rgb mean;
   for (const Rgb& p : render.image.pixels) mean += p;
   mean = mean / static_cast<double>(render.image.pixels.size());
-  const double outputSeconds = secondsSince(t);
-  const double totalSeconds = secondsSince(start);
-
   nlohmann::json report = {
       {"scene", o.solve.scenePath},
-      {"method", method.name},
+      {"method", f.method.name},
       // The light paths this image holds: the method's, or those --paths kept.
-      {"paths", o.paths.empty() ? method.paths : o.paths},
-      {"integrator", integrator->name()},
+      {"paths", o.paths.empty() ? f.method.paths : o.paths},
+      {"integrator", f.integrator.name()},
       {"camera",
        {{"position", vectorJson(camera.position)},
         {"look_at", vectorJson(camera.lookAt)},
@@ -263,11 +257,11 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
         {"lens_radius", camera.lensRadius},
         {"focus_distance", camera.focusDistance}}},
       {"samples_per_pixel", spp},
-      {"adaptive", adaptiveReport(render, spp, settings.adaptive)},
+      {"adaptive", adaptiveReport(render, spp, f.settings.adaptive)},
       {"gather_rays", radiosity ? o.gather.gatherRays : 0},
       {"light_rays", radiosity ? o.gather.shadowRays() : 0},
       {"seed", o.solve.seed},
-      {"threads", threads},
+      {"threads", f.threads},
       {"rays",
        {{"camera", render.rays.camera},
         {"closest_hit", render.rays.closest},
@@ -275,19 +269,19 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
         {"total", render.rays.total()}}},
       {"rays_per_second", render.seconds > 0 ? render.rays.total() / render.seconds : 0.0},
       {"time_seconds",
-       {{"solve", solveSeconds},
-        {"bvh", bvhSeconds},
+       {{"solve", f.solveSeconds},
+        {"bvh", f.bvhSeconds},
         {"render", render.seconds},
-        {"output", outputSeconds},
-        {"total", totalSeconds}}},
+        {"output", f.outputSeconds},
+        {"total", f.totalSeconds}}},
       {"mean_radiance", {mean.r, mean.g, mean.b}},
       {"units", "render.exr holds linear radiance, W/(m^2 sr), for scenes in metres"},
       {"tone_map",
-       {{"exposure", toneMap.exposure},
+       {{"exposure", f.toneMap.exposure},
         {"operator",
          "png = sRGB OETF(clamp(exposure * L, 0, 1)); exposure maps the 99th "
          "percentile of pixel luminance to 1 unless --exposure is given"}}},
-      {"skipped", skipped},
+      {"skipped", skipped.json()},
   };
   {
     // The noise of render.exr: mean over pixels and channels of the variance of a pixel's mean.
@@ -296,7 +290,7 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
     report["mean_pixel_variance"] = variance / (3.0 * render.variance.pixels.size());
   }
   if (o.method == "bdpt") report["mis"] = o.mis;
-  if (separateBounces) {
+  if (o.bouncesSeparate) {
     report["bounces_separate"] = {
         {"max_bounce", *o.bouncesSeparate},
         {"images", bounceNames},
@@ -305,22 +299,97 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
                      : "bounce_k: paths with exactly k scattering vertices (D or S): T^k L_e"}};
   }
   if (radiosity)
-    report["radiosity"] = {{"elements", mesh.elementCount()},
+    report["radiosity"] = {{"elements", f.elements},
                            {"solver", world.solved()->report.solverName},
                            {"converged", world.solved()->report.converged},
                            {"reused_saved_solution", world.reusedSolution()},
                            {"form_factor_rays", world.solved()->report.raysCast}};
-  if (method.usesMotion && !world.motionSpec().empty())
+  if (f.method.usesMotion && !world.motionSpec().empty())
     report["motion_blur"] = {
         {"shutter", {world.motionSpec().shutterOpen, world.motionSpec().shutterClose}},
         {"moving_objects", world.motionSpec().objects.size()}};
+  return report;
+}
+
+// What the render command skips before it renders, and why.
+void noteSkippedWork(const RenderCommandOptions& o, const RenderWorld& world,
+                     const RenderScene& renderScene, const Camera& camera, bool radiosity,
+                     SkipList& skipped) {
+  skipped.add(world.skipped());
+  if (!renderScene.hasSpecular())
+    skipped.add("specular branch", "the scene has no mirror or glass material");
+  if (radiosity && o.gather.gatherRays == 0)
+    skipped.add("final gather",
+                o.gather.indirectFromSolution()
+                    ? "--gather 0 --light-rays N: the indirect light is the solution's"
+                    : "--gather 0: interpolated radiosity preview");
+  if (o.method == "bdpt" && camera.lensRadius > 0)
+    skipped.add("light tracing (t = 1)", "it needs a pinhole camera (lens radius 0)");
+}
+
+void runRender(const CLI::App& command, RenderCommandOptions& o) {
+  const auto start = Clock::now();
+  const RenderMethod& method = findRenderMethod(o.method);
+  checkRenderOptions(command, o, method);
+  // The path expression and the camera before any long work: a bad one fails at once.
+  std::optional<ExpressionBinning> pathFilter;
+  if (!o.paths.empty()) pathFilter.emplace(PathExpression::parse(o.paths));
+  const ResolvedCamera resolved = resolveCamera(o.camera, o.solve.scenePath);
+  const Camera& camera = resolved.camera;
+  RenderWorld world(o.solve, resolved.file,
+                    {o.solutionDir, o.freshSolve ? std::string() : o.solve.outputDir});
+  const ThreadLimit threadLimit(o.solve.threads);
+
+  // The scene, its mesh and BVH, and (for methods that need it) the radiosity solution.
+  const RenderWorld::View view = world.viewFor(method);
+  const RenderScene& renderScene = *view.scene;
+  SkipList skipped;
+  noteSkippedWork(o, world, renderScene, camera, method.needsSolve, skipped);
+  const std::unique_ptr<Integrator> integrator =
+      method.makeIntegrator(MethodInputs{renderScene, view.radiosity, o.gather, &camera,
+                                         parseName(misHeuristicTable(), o.mis, "--mis")});
+  RenderSettings settings;
+  settings.samplesPerPixel = o.spp > 0 ? o.spp : method.defaultSpp;
+  settings.adaptive = o.adaptive;
+  settings.seed = o.solve.seed;
+  const RenderedImages images = renderImages(o, world, renderScene, *integrator, camera, settings,
+                                             pathFilter, method.needsSolve, skipped);
+  const RenderOutput& render = images.render;
+  if (render.rays.gathersSkipped > 0)
+    skipped.add("gathers at " + std::to_string(render.rays.gathersSkipped) + " eye-ray hits",
+                "the surface hit reflects nothing (ρ = 0): its radiance is its Ke");
+
+  // Outputs: EXR (linear radiance), PNG (tone-mapped), JSON (report); renamed together at the end.
+  const auto t = Clock::now();
+  throwIfInterrupted();
+  OutputSection writing;  // Ctrl-C now waits until every file has its final name (or none has)
+  ensureDirectory(o.solve.outputDir);
+  const std::filesystem::path dir(o.solve.outputDir);
+  // Auto exposure from the lit surfaces in view: emitter and sky pixels do not set it.
+  const ToneMap toneMap = o.exposure.toneMap([&] {
+    return ToneMap::autoExposure(render.image.pixels, exposureWeights(camera, renderScene));
+  });
+  std::vector<std::unique_ptr<AtomicPath>> imageFiles;
+  const nlohmann::json bounceNames = writeImages(dir, images, camera, toneMap, imageFiles);
+  const RenderFacts facts{method,
+                          *integrator,
+                          camera,
+                          settings,
+                          render,
+                          toneMap,
+                          renderScene.mesh().elementCount(),
+                          threadLimit.threads(),
+                          world.solveSeconds(),
+                          world.bvhSeconds(),
+                          secondsSince(t),
+                          secondsSince(start)};
   AtomicFile json((dir / "render.json").string());
-  json.stream() << report.dump(2) << "\n";
+  json.stream() << renderReport(o, facts, world, bounceNames, skipped).dump(2) << "\n";
 
   // The solution, for the next render into this directory (not when it was reused from here).
   std::vector<AtomicFile*> files = {&json};
   std::unique_ptr<AtomicFile> solutionCsv, solutionJson;
-  if (radiosity && !world.reusedSolution() && solutionIsReusable(o.solve)) {
+  if (method.needsSolve && !world.reusedSolution() && solutionIsReusable(o.solve)) {
     solutionCsv = std::make_unique<AtomicFile>((dir / kSolutionCsv).string());
     solutionJson = std::make_unique<AtomicFile>((dir / kSolutionJson).string());
     writeSavedSolution(*solutionCsv, *solutionJson, *world.solved(), o.solve);
@@ -328,9 +397,7 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
     files.push_back(solutionJson.get());
   }
   for (AtomicFile* f : files) f->finish();
-  exr.commit();
-  png.commit();
-  for (auto& file : bounceFiles) file->commit();
+  for (auto& file : imageFiles) file->commit();
   commitAll(files);
   logInfo("wrote render.exr, render.png, render.json to " + o.solve.outputDir + " (" +
           std::to_string(render.rays.total()) + " rays in " + std::to_string(render.seconds) +
