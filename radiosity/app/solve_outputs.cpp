@@ -32,79 +32,155 @@ constexpr bool kWritesVtp = true;
 constexpr bool kWritesVtp = false;
 #endif
 
-nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& result,
-                           double exposure) {
+// summary.json's "scene": the scene, its mesh, the element size and the buried parts.
+nlohmann::json sceneJson(const SolveOptions& options, const SolveResult& result) {
   using nlohmann::json;
   const Solution& s = result.solution;
   const SolveReport& r = result.report;
   const PatchMesh& mesh = *s.mesh;
-  const bool hemisphere = options.formFactors == FormFactorMethod::Hemisphere;
   int emitterElements = 0;
   for (const Rgb& e : s.problem.emission) emitterElements += e.maxComponent() > 0;
   int backSideElements = 0;  // elements of the back copies of two-sided polygons
   for (int e = 0; e < mesh.elementCount(); ++e)
     backSideElements += s.scene.polygons[static_cast<std::size_t>(mesh.patch(e))].backSideOf >= 0;
-  json skipped = json::array();
-  for (const SkipNote& s : r.skipped) skipped.push_back({{"what", s.what}, {"why", s.why}});
   json materials = json::array();
   for (const Material& m : s.scene.materials) materials.push_back(m.name);
+  return {{"file", options.scenePath},
+          {"polygons", s.scene.polygons.size()},
+          {"triangles", mesh.inputTriangleCount()},
+          {"patches", mesh.patchCount()},
+          {"elements", mesh.elementCount()},
+          {"back_side_polygons", s.scene.backSideCount()},
+          {"back_side_elements", backSideElements},
+          {"vertices", mesh.vertexCount()},
+          {"emitters", s.scene.emitterCount()},
+          {"emitter_elements", emitterElements},
+          {"materials", materials},
+          {"skipped_degenerate_faces", s.scene.skippedDegenerateFaces},
+          {"texture_fallbacks", s.scene.textureFallbacks},
+          {"total_area", mesh.totalArea()},
+          {"max_element_area", r.maxArea},
+          {"element_size", r.elementSize},
+          {"element_size_rule", r.elementSizeRule},
+          {"elements_before_refinement", r.elementsBeforeRefinement},
+          {"refinement_passes", r.refinementPasses},
+          {"buried",
+           {{"partly", r.partlyBuried},
+            {"fully", r.fullyBuried},
+            {"area_fraction", r.buriedAreaFraction},
+            {"probe_rays", r.exposureProbeRays},
+            {"note",
+             "parts of elements enclosed by one-sided geometry (under a box standing on them): "
+             "they neither receive nor shoot, and B is over the exposed area"}}}};
+}
 
+// summary.json's "form_factors": what was cast, and how fast.
+nlohmann::json formFactorsJson(const SolveOptions& options, const SolveReport& r) {
+  using nlohmann::json;
+  const bool hemisphere = options.formFactors == FormFactorMethod::Hemisphere;
   const double rayTime = r.times.formFactors;
-  const auto count = [&s](const char* type) {
+  return {{"method", formFactorMethodName(options.formFactors)},
+          {"shooters", r.shooters},
+          {"rays_per_element", hemisphere ? json(options.raysPerElement) : json()},
+          {"shadow_rays", hemisphere ? json() : json(options.shadowRays)},
+          {"receiver_points", hemisphere ? json() : json(options.receiverPoints)},
+          {"rows_computed", r.rowsComputed},
+          {"rays_cast", r.raysCast},
+          {"specular_rays", r.specularRays},
+          {"rays_per_second", rayTime > 0 ? r.raysCast / rayTime : 0.0},
+          {"seed", options.seed}};
+}
+
+// summary.json's "lights": the lights by type and their first shot's rays.
+nlohmann::json lightsJson(const Scene& scene, const SolveReport& r) {
+  const auto count = [&scene](const char* type) {
     int n = 0;
-    for (const Light& light : s.scene.lights) n += lightTypeName(light.type) == type;
+    for (const Light& light : scene.lights) n += lightTypeName(light.type) == type;
     return n;
   };
-  return {
-      {"scene",
-       {{"file", options.scenePath},
-        {"polygons", s.scene.polygons.size()},
-        {"triangles", mesh.inputTriangleCount()},
-        {"patches", mesh.patchCount()},
-        {"elements", mesh.elementCount()},
-        {"back_side_polygons", s.scene.backSideCount()},
-        {"back_side_elements", backSideElements},
-        {"vertices", mesh.vertexCount()},
-        {"emitters", s.scene.emitterCount()},
-        {"emitter_elements", emitterElements},
-        {"materials", materials},
-        {"skipped_degenerate_faces", s.scene.skippedDegenerateFaces},
-        {"texture_fallbacks", s.scene.textureFallbacks},
-        {"total_area", mesh.totalArea()},
-        {"max_element_area", r.maxArea},
-        {"element_size", r.elementSize},
-        {"element_size_rule", r.elementSizeRule},
-        {"elements_before_refinement", r.elementsBeforeRefinement},
-        {"refinement_passes", r.refinementPasses},
-        {"buried",
-         {{"partly", r.partlyBuried},
-          {"fully", r.fullyBuried},
-          {"area_fraction", r.buriedAreaFraction},
-          {"probe_rays", r.exposureProbeRays},
+  return {{"point", count("point")},
+          {"spot", count("spot")},
+          {"directional", count("directional")},
+          {"sky", count("sky")},
+          {"environment", count("environment")},
+          {"direct_light_rays", r.directLightRays},
           {"note",
-           "parts of elements enclosed by one-sided geometry (under a box standing on them): "
-           "they neither receive nor shoot, and B is over the exposed area"}}}}},
-      {"form_factors",
-       {{"method", formFactorMethodName(options.formFactors)},
-        {"shooters", r.shooters},
-        {"rays_per_element", hemisphere ? json(options.raysPerElement) : json()},
-        {"shadow_rays", hemisphere ? json() : json(options.shadowRays)},
-        {"receiver_points", hemisphere ? json() : json(options.receiverPoints)},
-        {"rows_computed", r.rowsComputed},
-        {"rays_cast", r.raysCast},
-        {"specular_rays", r.specularRays},
-        {"rays_per_second", rayTime > 0 ? r.raysCast / rayTime : 0.0},
-        {"seed", options.seed}}},
-      {"lights",
-       {{"point", count("point")},
-        {"spot", count("spot")},
-        {"directional", count("directional")},
-        {"sky", count("sky")},
-        {"environment", count("environment")},
-        {"direct_light_rays", r.directLightRays},
-        {"note",
-         "the first shot of these lights at each element's receiver points enters the solve "
-         "as emission: emitted_power includes its reflected part"}}},
+           "the first shot of these lights at each element's receiver points enters the solve "
+           "as emission: emitted_power includes its reflected part"}};
+}
+
+// summary.json's "hierarchy" (--solver hierarchical; null otherwise).
+nlohmann::json hierarchyJson(const SolveOptions& options, const SolveReport& r,
+                             const PatchMesh& mesh) {
+  using nlohmann::json;
+  return r.hierarchy.nodes == 0
+             ? json()
+             : json{{"link_epsilon", options.linkEpsilon},
+                    {"nodes", r.hierarchy.nodes},
+                    {"clusters", r.hierarchy.clusters},
+                    {"depth", r.hierarchy.depth},
+                    {"links", r.hierarchy.links},
+                    {"receivers", r.hierarchy.receivers},
+                    {"link_passes", r.hierarchy.linkPasses},
+                    {"links_split_by_refinement", r.hierarchy.linksRefined},
+                    {"bytes",
+                     {{"tree", r.hierarchy.treeBytes},
+                      {"links", r.hierarchy.linkBytes},
+                      {"solver", r.hierarchy.solverBytes}}},
+                    {"bytes_per_element",
+                     static_cast<double>(r.hierarchy.treeBytes + r.hierarchy.linkBytes +
+                                         r.hierarchy.solverBytes) /
+                         mesh.elementCount()},
+                    {"bytes_per_link",
+                     r.hierarchy.links > 0
+                         ? static_cast<double>(r.hierarchy.linkBytes) / r.hierarchy.links
+                         : 0.0},
+                    {"peak_memory_bytes", peakMemoryBytes()},
+                    {"note",
+                     "links between nodes of a tree over the elements (clusters above the input "
+                     "patches); bytes are the tree's, the links' and the solver's own, "
+                     "peak_memory_bytes the whole process's"}};
+}
+
+// summary.json's "update" (radiosity update; null otherwise).
+nlohmann::json updateJson(const SolveReport& r) {
+  using nlohmann::json;
+  return r.update.keptFactors.empty()
+             ? json()
+             : json{{"kept_factors", r.update.keptFactors},
+                    {"elements_moved_or_added", r.update.moved},
+                    {"kept_elements_moved_or_removed", r.update.removed},
+                    {"rows_reused", r.update.rowsReused},
+                    {"rows_updated_ray_by_ray", r.update.rowsUpdated},
+                    {"rays_changed", r.update.raysChanged},
+                    {"rays_tested", r.update.raysTested},
+                    {"rays_of_kept_rows", r.update.raysOfKeptRows},
+                    {"rows_cast_again", r.rowsComputed},
+                    {"rows_with_other_exposure_or_budget", r.update.rowsOtherChange},
+                    {"direct_light_kept", r.update.directLightKept},
+                    {"buried_cells_kept", r.update.buriedCellsKept},
+                    {"note",
+                     "a kept row of an element that stayed put is reused; the rays of it "
+                     "that meet the edited geometry's old or new place before their first "
+                     "hit are cast again and their hits exchanged; an element's direct "
+                     "light from a light is kept where none of its shadow rays to it can "
+                     "meet the edit (direct_light_kept counts element-light pairs), and "
+                     "its buried cells where none of its probe rays can "
+                     "(buried_cells_kept counts elements)"}};
+}
+
+nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& result,
+                           double exposure) {
+  using nlohmann::json;
+  const Solution& s = result.solution;
+  const SolveReport& r = result.report;
+  json skipped = json::array();
+  for (const SkipNote& note : r.skipped)
+    skipped.push_back({{"what", note.what}, {"why", note.why}});
+  return {
+      {"scene", sceneJson(options, result)},
+      {"form_factors", formFactorsJson(options, r)},
+      {"lights", lightsJson(s.scene, r)},
       {"solver",
        {{"name", r.solverName},
         {"iterations", r.iterations},
@@ -134,56 +210,8 @@ nlohmann::json summaryJson(const SolveOptions& options, const SolveResult& resul
                       : json{{"kept_factors", r.relitFrom},
                              {"rays_cast", r.raysCast + r.directLightRays + r.exposureProbeRays},
                              {"note", "solved again from the kept factors: no ray cast"}}},
-      {"hierarchy",
-       r.hierarchy.nodes == 0
-           ? json()
-           : json{{"link_epsilon", options.linkEpsilon},
-                  {"nodes", r.hierarchy.nodes},
-                  {"clusters", r.hierarchy.clusters},
-                  {"depth", r.hierarchy.depth},
-                  {"links", r.hierarchy.links},
-                  {"receivers", r.hierarchy.receivers},
-                  {"link_passes", r.hierarchy.linkPasses},
-                  {"links_split_by_refinement", r.hierarchy.linksRefined},
-                  {"bytes",
-                   {{"tree", r.hierarchy.treeBytes},
-                    {"links", r.hierarchy.linkBytes},
-                    {"solver", r.hierarchy.solverBytes}}},
-                  {"bytes_per_element",
-                   static_cast<double>(r.hierarchy.treeBytes + r.hierarchy.linkBytes +
-                                       r.hierarchy.solverBytes) /
-                       mesh.elementCount()},
-                  {"bytes_per_link",
-                   r.hierarchy.links > 0
-                       ? static_cast<double>(r.hierarchy.linkBytes) / r.hierarchy.links
-                       : 0.0},
-                  {"peak_memory_bytes", peakMemoryBytes()},
-                  {"note",
-                   "links between nodes of a tree over the elements (clusters above the input "
-                   "patches); bytes are the tree's, the links' and the solver's own, "
-                   "peak_memory_bytes the whole process's"}}},
-      {"update", r.update.keptFactors.empty()
-                     ? json()
-                     : json{{"kept_factors", r.update.keptFactors},
-                            {"elements_moved_or_added", r.update.moved},
-                            {"kept_elements_moved_or_removed", r.update.removed},
-                            {"rows_reused", r.update.rowsReused},
-                            {"rows_updated_ray_by_ray", r.update.rowsUpdated},
-                            {"rays_changed", r.update.raysChanged},
-                            {"rays_tested", r.update.raysTested},
-                            {"rays_of_kept_rows", r.update.raysOfKeptRows},
-                            {"rows_cast_again", r.rowsComputed},
-                            {"rows_with_other_exposure_or_budget", r.update.rowsOtherChange},
-                            {"direct_light_kept", r.update.directLightKept},
-                            {"buried_cells_kept", r.update.buriedCellsKept},
-                            {"note",
-                             "a kept row of an element that stayed put is reused; the rays of it "
-                             "that meet the edited geometry's old or new place before their first "
-                             "hit are cast again and their hits exchanged; an element's direct "
-                             "light from a light is kept where none of its shadow rays to it can "
-                             "meet the edit (direct_light_kept counts element-light pairs), and "
-                             "its buried cells where none of its probe rays can "
-                             "(buried_cells_kept counts elements)"}}},
+      {"hierarchy", hierarchyJson(options, r, *s.mesh)},
+      {"update", updateJson(r)},
   };
 }
 
