@@ -418,17 +418,23 @@ TEST(GltfLoader, UnsupportedRequiredExtensionButUsedOnesAreOnlyNoted) {
               "/extensionsRequired/1: required extension KHR_draco_mesh_compression");
 }
 
-// Asked to use the material's colour (the command line's default), an image that does not decode
-// is a warning at its JSON pointer, no texture and one fallback; strict, an error as above.
-TEST(GltfLoader, ACorruptImageCanFallBackToTheMaterialsColour) {
+// The quad with a base colour texture whose image is the file `uri`.
+tinygltf::Model quadWithBaseColourImage(const std::string& uri) {
   tinygltf::Model model = quadModel();
   tinygltf::Image image;
-  image.uri = "corrupt_fallback.png";
+  image.uri = uri;
   model.images.push_back(image);
   tinygltf::Texture texture;
   texture.source = 0;
   model.textures.push_back(texture);
   model.materials[0].pbrMetallicRoughness.baseColorTexture.index = 0;
+  return model;
+}
+
+// Asked to use the material's colour (the command line's default), an image that does not decode
+// is a warning at its JSON pointer, no texture and one fallback; strict, an error as above.
+TEST(GltfLoader, ACorruptImageCanFallBackToTheMaterialsColour) {
+  tinygltf::Model model = quadWithBaseColourImage("corrupt_fallback.png");
   std::ofstream(scratchDir() / "corrupt_fallback.png") << "not a png";
   const auto path = write(model, "corrupt_fallback.gltf");
   ::testing::internal::CaptureStderr();
@@ -445,14 +451,7 @@ TEST(GltfLoader, ACorruptImageCanFallBackToTheMaterialsColour) {
 }
 
 TEST(GltfLoader, MissingAndCorruptImages) {
-  tinygltf::Model model = quadModel();
-  tinygltf::Image image;
-  image.uri = "no_such_texture.png";
-  model.images.push_back(image);
-  tinygltf::Texture texture;
-  texture.source = 0;
-  model.textures.push_back(texture);
-  model.materials[0].pbrMetallicRoughness.baseColorTexture.index = 0;
+  tinygltf::Model model = quadWithBaseColourImage("no_such_texture.png");
   expectError(write(model, "missing_image.gltf"), "/images/0/uri: cannot read image file");
   // A file that is there but is not an image: the texture decoder names it.
   std::ofstream(scratchDir() / "corrupt.png") << "not a png";
