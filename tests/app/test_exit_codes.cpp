@@ -15,7 +15,16 @@ TEST(ExitCodes, SuccessIsZero) {
   EXPECT_EQ(runCommand([] {}), kExitSuccess);
 }
 
-TEST(ExitCodesDeathTest, FailedCheckExits3AsABug) {
+// The death tests run their child as a fresh process of this binary ("threadsafe"), not a fork:
+// a library loaded with the program may start a thread (OpenImageIO's log4cplus does), and a
+// forked child, which has none of the parent's threads, then hangs in that library's exit
+// handler waiting for it (seen under the clang sanitizer build, which links every library).
+class ExitCodesDeathTest : public ::testing::Test {
+ protected:
+  void SetUp() override { GTEST_FLAG_SET(death_test_style, "threadsafe"); }
+};
+
+TEST_F(ExitCodesDeathTest, FailedCheckExits3AsABug) {
   EXPECT_EXIT(std::exit(runCommand([] {
                 const int vertices = 4, values = 3;
                 RAD_CHECK_EQ(values, vertices);
@@ -25,12 +34,12 @@ TEST(ExitCodesDeathTest, FailedCheckExits3AsABug) {
               "\\.cpp:[0-9]+: check failed: values == vertices \\(3 vs 4\\)");
 }
 
-TEST(ExitCodesDeathTest, InputErrorStillExits1) {
+TEST_F(ExitCodesDeathTest, InputErrorStillExits1) {
   EXPECT_EXIT(std::exit(runCommand([] { throw InputError("scene.obj", 7, "unknown material"); })),
               ::testing::ExitedWithCode(1), "error: scene.obj:7: unknown material");
 }
 
-TEST(ExitCodesDeathTest, OtherFailuresExit1) {
+TEST_F(ExitCodesDeathTest, OtherFailuresExit1) {
   EXPECT_EXIT(std::exit(runCommand([] { throw RuntimeFailure("disk full"); })),
               ::testing::ExitedWithCode(1), "error: disk full");
 }
