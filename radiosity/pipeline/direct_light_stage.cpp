@@ -10,124 +10,74 @@
 
 #include "meshing/element_stream.h"
 #include "radiosity/core/check.h"
+#include "radiosity/core/hemisphere.h"
 #include "radiosity/core/log.h"
 #include "radiosity/core/rng.h"
 #include "radiosity/core/seconds_since.h"
 #include "radiosity/core/stream_tags.h"
-#include "radiosity/formfactors/hemisphere_sampling.h"
 #include "radiosity/formfactors/receiver_points.h"
+#include "radiosity/lighting/light_choice.h"
+#include "radiosity/lighting/light_sample.h"
 #include "radiosity/pipeline/solver_results.h"
-#include "radiosity/scene/light_shapes.h"
 
 namespace rad {
 namespace {
 
-// I cosθ / r² (a spot's falloff included) at x, as if nothing were in the way; 0 behind the
-// surface or outside the cone.
-Rgb unshadowedPointIrradiance(const Light& light, const Eigen::Vector3d& x,
-                              const Eigen::Vector3d& n) {
-  const Eigen::Vector3d toLight = light.position - x;
-  const double r2 = toLight.squaredNorm();
-  if (!(r2 > 0) || !std::isfinite(r2)) return {};  // on the point, or too far for a double
-  const double r = std::sqrt(r2);
-  const double cosTheta = n.dot(toLight) / r;
-  if (!(cosTheta > 0)) return {};
-  const double falloff =
-      light.type == LightType::Spot ? spotFalloff(light, light.direction.dot(-toLight) / r) : 1;
-  if (falloff <= 0) return {};
-  return light.intensity * (falloff * cosTheta / r2);
-}
-
-bool pointLightVisible(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-                       const Eigen::Vector3d& n, uint64_t& raysCast) {
-  const Eigen::Vector3d origin = rays.liftOff(x, n, light.position - x);
+// Whether the shadow ray from x (normal n) along the sample's direction reaches the light.
+bool reaches(const LightSample& sample, const RayCaster& rays, const Eigen::Vector3d& x,
+             const Eigen::Vector3d& n, uint64_t& raysCast) {
   ++raysCast;
-  return !rays.occluded(origin, light.position - origin, 1.0 - 1e-6);
+  const Eigen::Vector3d origin = rays.liftOff(x, n, sample.direction);
+  if (!std::isfinite(sample.distance))
+    return !rays.occluded(origin, sample.direction, std::numeric_limits<double>::infinity());
+  const Eigen::Vector3d target = x + sample.direction * sample.distance;
+  return !rays.occluded(origin, target - origin, 1.0 - 1e-6);
 }
 
-Rgb fromPointLight(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-                   const Eigen::Vector3d& n, uint64_t& raysCast) {
-  const Rgb e = unshadowedPointIrradiance(light, x, n);
-  if (e.isZero() || !pointLightVisible(light, rays, x, n, raysCast)) return {};
-  return e;
-}
-
-bool isPointLike(const Light& light) {
-  return light.type == LightType::Point || light.type == LightType::Spot;
-}
-
-Rgb fromDirectional(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-                    const Eigen::Vector3d& n, const DirectRays& count, uint64_t key,
-                    uint64_t& raysCast) {
-  const Eigen::Vector3d toSun = -light.direction;
-  const double inf = std::numeric_limits<double>::infinity();
-  if (light.angularDiameterDegrees <= 0) {
-    const double cosTheta = n.dot(toSun);
-    if (cosTheta <= 0) return {};
-    ++raysCast;
-    if (rays.occluded(rays.liftOff(x, n, toSun), toSun, inf)) return {};
-    return light.irradiance * cosTheta;
-  }
-  // Directions uniform in solid angle over the sun's disc, stratified sunStrata²: the mean of
-  // L cosθ / (1/Ω) with the disc's radiance L (light_shapes.h).
-  Rng rng(key);
-  double sum = 0;
-  const int m = count.sunStrata, discRays = m * m;
-  for (int k = 0; k < discRays; ++k) {
+// The mean, over m² samples of the light stratified over the unit square, of their irradiance
+// where their shadow ray is clear: a sun's disc, a sky sampled about the normal.
+Rgb byLightSamples(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
+                   const Eigen::Vector3d& n, int m, Rng& rng, uint64_t& raysCast) {
+  Rgb sum;
+  const int count = m * m;
+  for (int k = 0; k < count; ++k) {
     const double u1 = (k % m + rng.uniform()) / m, u2 = (k / m + rng.uniform()) / m;
-    const Eigen::Vector3d w = sunDirection(light, u1, u2);
-    const double cosTheta = n.dot(w);
-    if (cosTheta <= 0) continue;
-    ++raysCast;
-    if (!rays.occluded(rays.liftOff(x, n, w), w, inf)) sum += cosTheta;
+    const LightSample s = sampleLight(light, x, n, u1, u2);
+    if (s.found() && reaches(s, rays, x, n, raysCast)) sum += s.irradiance;
   }
-  return sunRadiance(light) * (sunSolidAngle(light) * sum / discRays);
-}
-
-Rgb fromSky(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-            const Eigen::Vector3d& n, const DirectRays& count, uint64_t key, uint64_t& raysCast) {
-  const Frame frame(n);
-  Rng rng(key);
-  const double inf = std::numeric_limits<double>::infinity();
-  Rgb open;  // the radiance of the rays that reach the sky
-  const int m = count.skyStrata, skyRays = m * m;
-  for (int k = 0; k < skyRays; ++k) {
-    const double u1 = (k % m + rng.uniform()) / m, u2 = (k / m + rng.uniform()) / m;
-    const Eigen::Vector3d w = frame.toWorld(cosineWeightedDirection(u1, u2));
-    const Rgb radiance = skyRadiance(light, w);
-    if (radiance.isZero()) continue;  // below the horizon: the ground is black
-    ++raysCast;
-    if (!rays.occluded(rays.liftOff(x, n, w), w, inf)) open += radiance;
-  }
-  return open * (M_PI / skyRays);
+  return sum / count;
 }
 
 // A light sampled by its map (an environment, a clear sky): half the rays by the map's luminance,
-// half cosine-weighted, each stratified (skyStrata × skyStrata / 2) and combined by the balance
-// heuristic, so a sun in the image is found and a dim, wide map stays smooth: E = Σ L cosθ / (n
-// (p_map + p_cos)) over both sets' unshadowed rays, n rays in each.
-Rgb fromMap(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
-            const Eigen::Vector3d& n, const DirectRays& count, uint64_t key, uint64_t& raysCast) {
+// half cosine-weighted, each stratified (m × m / 2) and combined by the balance heuristic, so a
+// sun in the image is found and a dim, wide map stays smooth: E = Σ L cosθ / (n (p_map + p_cos))
+// over both sets' unshadowed rays, n rays in each.
+Rgb byMapAndCosine(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
+                   const Eigen::Vector3d& n, int m, Rng& rng, uint64_t& raysCast) {
   const Frame frame(n);
-  Rng rng(key);
-  const double inf = std::numeric_limits<double>::infinity();
-  const int m = count.skyStrata, kEach = m * m / 2;
+  const int kEach = m * m / 2;
   Rgb sum;
   for (int k = 0; k < 2 * kEach; ++k) {
     const int s = k % kEach;
     const double u1 = (s % m + rng.uniform()) / m, u2 = (s / m + rng.uniform()) / (m / 2);
-    double mapPdf = 0;
-    const Eigen::Vector3d w = k < kEach ? light.map->sample(u1, u2, mapPdf)
-                                        : frame.toWorld(cosineWeightedDirection(u1, u2));
-    const double cosTheta = n.dot(w);
-    if (!(cosTheta > 0)) continue;
-    const Rgb radiance = skyRadiance(light, w);
-    if (radiance.isZero()) continue;
-    ++raysCast;
-    if (rays.occluded(rays.liftOff(x, n, w), w, inf)) continue;
-    sum += radiance * (cosTheta / (light.map->pdf(w) + cosTheta / M_PI));
+    LightSample sample;
+    if (k < kEach) {
+      sample = sampleLight(light, x, n, u1, u2);
+    } else {
+      sample.direction = frame.toWorld(cosineWeightedDirection(u1, u2));
+      sample.cosTheta = n.dot(sample.direction);
+      sample.radiance = radianceAlong(light, sample.direction);
+    }
+    if (!(sample.cosTheta > 0) || sample.radiance.isZero()) continue;
+    if (!reaches(sample, rays, x, n, raysCast)) continue;
+    sum += sample.radiance *
+           (sample.cosTheta / (lightPdf(light, n, sample.direction) + sample.cosTheta / M_PI));
   }
   return sum / kEach;
+}
+
+bool isPointOrSpot(const Light& light) {
+  return light.type == LightType::Point || light.type == LightType::Spot;
 }
 
 }  // namespace
@@ -135,45 +85,22 @@ Rgb fromMap(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
 Rgb directIrradiance(const Light& light, const RayCaster& rays, const Eigen::Vector3d& x,
                      const Eigen::Vector3d& n, uint64_t key, uint64_t& raysCast,
                      const DirectRays& count) {
-  switch (light.type) {
-    case LightType::Point:
-    case LightType::Spot:
-      return fromPointLight(light, rays, x, n, raysCast);
-    case LightType::Directional:
-      return fromDirectional(light, rays, x, n, count, key, raysCast);
-    case LightType::Sky:
-    case LightType::Environment:
-      return light.map ? fromMap(light, rays, x, n, count, key, raysCast)
-                       : fromSky(light, rays, x, n, count, key, raysCast);
+  if (isDeltaLight(light)) {
+    const LightSample s = sampleLight(light, x, n, 0, 0);
+    return s.found() && reaches(s, rays, x, n, raysCast) ? s.irradiance : Rgb();
   }
-  return {};
+  Rng rng(key);
+  if (light.map) return byMapAndCosine(light, rays, x, n, count.skyStrata, rng, raysCast);
+  const int m = light.type == LightType::Directional ? count.sunStrata : count.skyStrata;
+  return byLightSamples(light, rays, x, n, m, rng, raysCast);
 }
 
 Rgb sampledPointLightIrradiance(const std::vector<const Light*>& lights, const RayCaster& rays,
                                 const Eigen::Vector3d& x, const Eigen::Vector3d& n, double u,
                                 uint64_t& raysCast) {
-  // Every light's unshadowed share is cheap (no ray); one light, picked in proportion to its
-  // share's luminance, gets the shadow ray. Its share over its probability is unbiased for the
-  // sum, and exact wherever all the lights see x alike.
-  thread_local std::vector<Rgb> shares;
-  shares.clear();
-  double total = 0;
-  for (const Light* light : lights) {
-    shares.push_back(unshadowedPointIrradiance(*light, x, n));
-    total += shares.back().luminance();
-  }
-  if (!(total > 0)) return {};
-  double pick = u * total;
-  size_t chosen = 0;
-  for (size_t l = 0; l < lights.size(); ++l) {
-    const double weight = shares[l].luminance();
-    if (weight <= 0) continue;
-    chosen = l;  // the last one with a share, should rounding leave `pick` just above 0
-    pick -= weight;
-    if (pick < 0) break;
-  }
-  if (!pointLightVisible(*lights[chosen], rays, x, n, raysCast)) return {};
-  return shares[chosen] * (total / shares[chosen].luminance());
+  const LightChoice choice = chooseLight(lights, x, n, u);
+  if (!choice.sample.found() || !reaches(choice.sample, rays, x, n, raysCast)) return {};
+  return choice.sample.irradiance * choice.weight;
 }
 
 DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, const RayCaster& rays,
@@ -193,7 +120,7 @@ DirectLightStage::DirectLightStage(const Scene& scene, const PatchMesh& mesh, co
   }
   for (size_t l : lights_) {
     RAD_CHECK_LT(l, scene.lights.size());
-    if (isPointLike(scene.lights[l])) pointLights_.push_back(&scene.lights[l]);
+    if (isPointOrSpot(scene.lights[l])) pointLights_.push_back(&scene.lights[l]);
   }
   samplePointLights_ = pointLights_.size() > kEveryPointLight;
 }
@@ -214,7 +141,7 @@ void DirectLightStage::compute(int e) {
   const int used =
       forEachExposedStratum(mesh_, exposure_, e, jitter, [&](const Eigen::Vector3d& x, int j) {
         for (size_t l : lights_) {
-          if (samplePointLights_ && isPointLike(scene_.lights[l])) continue;
+          if (samplePointLights_ && isPointOrSpot(scene_.lights[l])) continue;
           areaSum += directIrradiance(
               scene_.lights[l], rays_, x, n,
               streamKey(seed_ ^ stream_tag::kLightAreaMean, stream, 1 + l * 64 + j), cast,

@@ -8,6 +8,7 @@
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/core/rgb.h"
+#include "radiosity/lighting/light_choice.h"
 #include "radiosity/pipeline/exposed_strata.h"
 #include "radiosity/pipeline/solution.h"
 #include "radiosity/pipeline/solve_options.h"
@@ -28,10 +29,8 @@ struct DirectRays {
 // with kAreaRays (4 × 4 sky rays, 2 × 2 over the sun): 256 sky rays per element in all, as many
 // directions as the three receiver points had, now spread over the whole element.
 constexpr DirectRays kAreaRays{4, 2};
-// Up to this many point and spot lights, every one gets a shadow ray from each area point; with
-// more, each point casts one, to a light picked in proportion to its unshadowed irradiance there
-// (sampledPointLightIrradiance), so a scene with hundreds of lamps costs no more per element.
-constexpr size_t kEveryPointLight = 4;
+// With more point and spot lights than kEveryPointLight (lighting/light_choice.h), each point
+// casts one shadow ray, to a light chosen by chooseLight.
 
 // The sum of the point and spot lights' E_d at x by that one shadow ray; `u` in [0, 1) picks it.
 Rgb sampledPointLightIrradiance(const std::vector<const Light*>& lights, const RayCaster& rays,

@@ -38,7 +38,7 @@ void EmitterFirstShot::apply(RadiosityProblem& problem) {
   for (int e = 0; e < problem.size(); ++e) {
     // The emitter's whole area: a buried part of an emitter still emits into its enclosure, where
     // no ray from an exposed receiver reaches it.
-    const double power = mesh_.area(e) * problem.emission[e].luminance();
+    const double power = emitterPower(mesh_.area(e), problem.emission[e]);
     if (power <= 0) continue;
     if (mesh_.patchArea(mesh_.patch(e)) > largeEmitterShare_ * sceneArea) continue;
     emitters_.push_back(e);
@@ -48,17 +48,9 @@ void EmitterFirstShot::apply(RadiosityProblem& problem) {
   if (emittingArea > largeEmitterShare_ * sceneArea) emitters_.clear();
   if (emitters_.empty()) return;
   sortAlongSpace();
-  double total = 0;
-  for (int e : emitters_) {
-    total += mesh_.area(e) * problem.emission[e].luminance();
-    cumulative_.push_back(total);
-  }
-  probability_.resize(emitters_.size());
-  for (size_t k = emitters_.size(); k-- > 0;) {  // from the end: each needs its predecessor's sum
-    probability_[k] = (cumulative_[k] - (k > 0 ? cumulative_[k - 1] : 0.0)) / total;
-    cumulative_[k] /= total;
-  }
-  cumulative_.back() = 1.0;
+  std::vector<double> powers;
+  for (int e : emitters_) powers.push_back(emitterPower(mesh_.area(e), problem.emission[e]));
+  power_ = PowerDistribution(powers);
 
   emission_.assign(problem.size(), Rgb());  // E of the emitters shot here; the rest stays
   for (int e : emitters_) emission_[e] = problem.emission[e];
@@ -132,10 +124,7 @@ Rgb EmitterFirstShot::directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& 
     // point spread over the emitter as a jittered grid would, so a penumbra's visibility is
     // sampled evenly rather than by chance.
     const double u = (k + rng.uniform()) / raysPerPoint_;
-    const size_t pick =
-        std::min(static_cast<size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), u) -
-                                     cumulative_.begin()),
-                 emitters_.size() - 1);
+    const size_t pick = power_.pick(u);
     const int j = emitters_[pick];
     const auto corners = mesh_.corners(j);
     const Eigen::Vector3d centre = (corners[0] + corners[1] + corners[2]) / 3;
@@ -151,7 +140,7 @@ Rgb EmitterFirstShot::directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& 
       const Eigen::Vector3d w = d / r;
       const double cosines = n.dot(w) * -mesh_.normal(j).dot(w);
       if (n.dot(w) > 0 && cosines > 0 && visible(x, n, y, mesh_.normal(j)))
-        sum += emission_[j] * (cosines * mesh_.area(j) / (M_PI * r * r) / probability_[pick]);
+        sum += emission_[j] * (cosines * mesh_.area(j) / (M_PI * r * r) / power_.probability(pick));
       continue;
     }
     // Near it: the unoccluded factor in closed form, bounded by 1 however near the emitter:
@@ -166,7 +155,8 @@ Rgb EmitterFirstShot::directAt(const Eigen::Vector3d& x, const Eigen::Vector3d& 
       const Eigen::Vector3d y = uniformPointOnTriangle(corners, rng.uniform(), rng.uniform());
       const Eigen::Vector3d w = (y - x).normalized();
       if (!(n.dot(w) > 0 && mesh_.normal(j).dot(w) < 0)) continue;
-      if (visible(x, n, y, mesh_.normal(j))) sum += emission_[j] * (factor / probability_[pick]);
+      if (visible(x, n, y, mesh_.normal(j)))
+        sum += emission_[j] * (factor / power_.probability(pick));
       break;
     }
   }

@@ -7,6 +7,7 @@
 #include "meshing/patch_mesh.h"
 #include "radiosity/core/rgb.h"
 #include "radiosity/core/rng.h"
+#include "radiosity/lighting/power_distribution.h"
 #include "radiosity/solvers/radiosity_problem.h"
 #include "radiosity/visibility/element_exposure.h"
 #include "radiosity/visibility/ray_caster.h"
@@ -80,10 +81,9 @@ class EmitterFirstShot {
   uint64_t seed_;
   int raysPerPoint_;
   double largeEmitterShare_;
-  std::vector<int> emitters_;        // emitting elements
-  std::vector<double> cumulative_;   // their powers, summed, normalised to end at 1
-  std::vector<double> probability_;  // each one's share of the power
-  std::vector<Rgb> emission_;        // E of the emitters shot here, 0 elsewhere
+  std::vector<int> emitters_;  // emitting elements
+  PowerDistribution power_;    // over emitters_, by emitterPower
+  std::vector<Rgb> emission_;  // E of the emitters shot here, 0 elsewhere
   std::vector<Rgb> irradiance_;
   uint64_t raysCast_ = 0;
 };

@@ -64,7 +64,7 @@ std::array<Rgb, 4> hemisphereL1(const RenderScene& view, const std::vector<Rgb>&
     const std::array<double, 9> y = shBasis(d);
     for (int k = 0; k < 4; ++k) c[k] += radiance * (weight * y[k]);
   }
-  for (const DeltaLightArrival& a : deltaLightArrivals(view, lights, origin)) {
+  for (const LightArrival& a : lightArrivals(view, lights, origin)) {
     if (!(a.toLight.dot(n) > 0)) continue;  // below the texel's horizon
     const std::array<double, 9> y = shBasis(a.toLight);
     for (int k = 0; k < 4; ++k) c[k] += a.irradiance * y[k];

@@ -29,7 +29,7 @@ namespace rad {
 // What a ray sees is what the light probes see (probeRayRadiance: B/π of the hit element on its
 // front face, 0 on a back face, the sky and environment when it leaves); the point, spot and
 // directional lights above the texel's horizon are added analytically behind a shadow ray,
-// c_k += E · Y_k(ω_l) (deltaLightArrivals).
+// c_k += E · Y_k(ω_l) (lightArrivals).
 
 // The texel's lightmap files, for page `page` of `pages`: "lightmap_" + what for one page,
 // "lightmap_<page>_" + what for several (what: e.g. "sh_L0.exr", "direction.png").

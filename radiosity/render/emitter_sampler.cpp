@@ -7,41 +7,31 @@ namespace rad {
 
 EmitterSampler::EmitterSampler(const Scene& scene, const PatchMesh& mesh)
     : pdfArea_(mesh.elementCount(), 0.0), radiance_(mesh.elementCount()) {
-  double total = 0;
+  std::vector<double> powers;
   for (int e = 0; e < mesh.elementCount(); ++e) {
     const Rgb ke = scene.materials[mesh.material(e)].emission;
     radiance_[e] = ke;
-    const double power = mesh.area(e) * ke.sum();
+    const double power = emitterPower(mesh.area(e), ke);
     if (!(power > 0)) continue;
     elements_.push_back(e);
     corners_.push_back(mesh.corners(e));
     normals_.push_back(mesh.normal(e));
-    total += power;
-    cdf_.push_back(total);
+    powers.push_back(power);
   }
-  for (size_t k = 0; k < elements_.size(); ++k) {
-    cdf_[k] /= total;
-    const int e = elements_[k];
-    pdfArea_[e] = radiance_[e].sum() / total;  // (A·Ke/total) · (1/A)
-  }
-  if (!cdf_.empty()) cdf_.back() = 1.0;
+  power_ = PowerDistribution(powers);
+  for (const int e : elements_)
+    pdfArea_[e] = radiance_[e].luminance() / power_.total();  // (A·Ke/total) · (1/A)
 }
 
 EmitterSample EmitterSampler::sample(double u, double v) const {
   if (elements_.empty()) return {};
-  const size_t k = std::min<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin(),
-                                    elements_.size() - 1);
-  const double low = k > 0 ? cdf_[k - 1] : 0.0, width = cdf_[k] - low;
-  const double rescaled =
-      width > 0 ? std::clamp((u - low) / width, 0.0, std::nextafter(1.0, 0.0)) : 0.5;
-  return pointOn(k, rescaled, v);
+  const size_t k = power_.pick(u);
+  return pointOn(k, power_.rescaled(u, k), v);
 }
 
 EmitterSample EmitterSampler::sample(double u0, double u1, double u2) const {
   if (elements_.empty()) return {};
-  const size_t k = std::min<size_t>(std::upper_bound(cdf_.begin(), cdf_.end(), u0) - cdf_.begin(),
-                                    elements_.size() - 1);
-  return pointOn(k, u1, u2);
+  return pointOn(power_.pick(u0), u1, u2);
 }
 
 EmitterSample EmitterSampler::pointOn(size_t k, double u1, double u2) const {

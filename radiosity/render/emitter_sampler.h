@@ -6,6 +6,7 @@
 
 #include "meshing/patch_mesh.h"
 #include "radiosity/core/rgb.h"
+#include "radiosity/lighting/power_distribution.h"
 #include "radiosity/scene/scene.h"
 
 namespace rad {
@@ -18,9 +19,10 @@ struct EmitterSample {
   double pdfArea = 0;  // probability density per unit area of choosing this point
 };
 
-// Picks emitter elements with probability proportional to their power (area × Ke summed over
-// channels), then a uniform point on the chosen triangle: bright, large emitters get the
-// samples, and the density per area is the same on every element of a uniform light.
+// Picks emitter elements with probability proportional to their power (emitterPower: area ×
+// Ke's luminance, lighting/power_distribution.h), then a uniform point on the chosen triangle:
+// bright, large emitters get the samples, and the density per area is the same on every element of
+// a uniform light.
 class EmitterSampler {
  public:
   EmitterSampler(const Scene& scene, const PatchMesh& mesh);
@@ -43,7 +45,7 @@ class EmitterSampler {
   // structure at every sample was a visible share of a render.
   std::vector<std::array<Eigen::Vector3d, 3>> corners_;
   std::vector<Eigen::Vector3d> normals_;
-  std::vector<double> cdf_;      // over elements_
+  PowerDistribution power_;      // over elements_
   std::vector<double> pdfArea_;  // per mesh element
   std::vector<Rgb> radiance_;    // per mesh element
 };

@@ -14,7 +14,7 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/core/rng.h"
 #include "radiosity/core/stream_tags.h"
-#include "radiosity/scene/light_shapes.h"
+#include "radiosity/lighting/light_sample.h"
 
 namespace rad {
 namespace {
@@ -58,7 +58,7 @@ ProbeSh computeProbe(const RenderScene& view, const std::vector<Rgb>& radiosity,
     if (!radiance.isZero()) addScaled(probe.coefficients, shBasis(d), radiance * weight);
   }
   probe.inside = 2 * backHits > rays;
-  for (const DeltaLightArrival& a : deltaLightArrivals(view, lights, x))
+  for (const LightArrival& a : lightArrivals(view, lights, x))
     addScaled(probe.coefficients, shBasis(a.toLight), a.irradiance);
   return probe;
 }
@@ -111,10 +111,12 @@ std::array<double, 9> shBasis(const Eigen::Vector3d& direction) {
 
 ProbeLights::ProbeLights(const Scene& scene) {
   for (const Light& light : scene.lights) {
-    if (light.type == LightType::Sky || light.type == LightType::Environment)
-      skies.push_back(&light);
-    else
+    if (isDeltaLight(light))
       deltas.push_back(&light);
+    else if (light.type == LightType::Directional)
+      discs.push_back(&light);
+    else
+      skies.push_back(&light);
   }
 }
 
@@ -129,36 +131,33 @@ Rgb probeRayRadiance(const RenderScene& view, const std::vector<Rgb>& radiosity,
     else if (backFace)
       *backFace = true;
   } else {
-    for (const Light* sky : lights.skies) radiance += skyRadiance(*sky, direction);
+    for (const Light* sky : lights.skies) radiance += radianceAlong(*sky, direction);
   }
   return radiance;
 }
 
-std::vector<DeltaLightArrival> deltaLightArrivals(const RenderScene& view,
-                                                  const ProbeLights& lights,
-                                                  const Eigen::Vector3d& x) {
-  std::vector<DeltaLightArrival> arrivals;
+std::vector<LightArrival> lightArrivals(const RenderScene& view, const ProbeLights& lights,
+                                        const Eigen::Vector3d& x) {
+  std::vector<LightArrival> arrivals;
+  const auto arrive = [&](const LightSample& s, const Rgb& irradiance) {
+    if (irradiance.isZero()) return;
+    const bool blocked = std::isfinite(s.distance) ? view.occluded(x, x + s.direction * s.distance)
+                                                   : view.occludedAlong(x, s.direction);
+    if (!blocked) arrivals.push_back({s.direction, irradiance});
+  };
   for (const Light* light : lights.deltas) {
-    Eigen::Vector3d toLight;
-    Rgb irradiance;
-    if (light->type == LightType::Directional) {
-      toLight = -light->direction.normalized();
-      if (view.occludedAlong(x, toLight)) continue;
-      irradiance = light->irradiance;
-    } else {
-      toLight = light->position - x;
-      const double r2 = toLight.squaredNorm();
-      if (!(r2 > 0) || !std::isfinite(r2)) continue;
-      toLight /= std::sqrt(r2);
-      const double falloff = light->type == LightType::Spot
-                                 ? spotFalloff(*light, light->direction.normalized().dot(-toLight))
-                                 : 1.0;
-      if (!(falloff > 0)) continue;
-      if (view.occluded(x, light->position)) continue;
-      irradiance = light->intensity * (falloff / r2);
-    }
-    arrivals.push_back({toLight, irradiance});
+    const LightSample s = sampleLight(*light, x, -light->direction, 0, 0);
+    arrive(s, s.radiance);  // E⊥: a probe has no surface of its own
   }
+  // A sun's disc by the centres of kDiscStrata² equal strata of it, each its share of E⊥.
+  constexpr int kDiscStrata = 4;
+  for (const Light* light : lights.discs)
+    for (int k = 0; k < kDiscStrata * kDiscStrata; ++k) {
+      const LightSample s =
+          sampleLight(*light, x, -light->direction, (k % kDiscStrata + 0.5) / kDiscStrata,
+                      (k / kDiscStrata + 0.5) / kDiscStrata);
+      arrive(s, s.radiance / (s.pdf * kDiscStrata * kDiscStrata));
+    }
   return arrivals;
 }
 

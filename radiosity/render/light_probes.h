@@ -37,8 +37,8 @@ struct ProbeSh {
 // per probe by a random rotation seeded from (seed, probe index), each weighted 4π/rays. A ray
 // that hits a surface sees the hit element's B/π on its front face (0 from its back, counted as a
 // back-face hit); one that leaves the scene sees the sky and environment lights (skyRadiance). The
-// point, spot and directional lights (a sun with an angular diameter taken at its centre
-// direction, and so not also seen by the escaped rays) are added analytically when their shadow
+// point, spot and directional lights (a sun with an angular diameter over its disc, as everywhere
+// else, and so not also seen by the escaped rays: lightArrivals) are added when their shadow
 // ray is clear: c_k += E · Y_k(ω_l), E the irradiance on a surface facing the light and ω_l the
 // direction towards it. `radiosity`: B per element of view.mesh(). Deterministic for a seed,
 // whatever the thread count.
@@ -47,10 +47,10 @@ std::vector<ProbeSh> computeProbes(const RenderScene& view, const std::vector<Rg
                                    uint64_t seed);
 
 // The scene's lights as a probe ray sees them: at infinity, seen by the rays that leave the scene
-// (sky, environment), and the delta lights added analytically (point, spot, directional). Shared
+// (sky, environment), and the delta lights and suns' discs added by their samples. Shared
 // with the directional lightmaps (render/directional_lightmap.h).
 struct ProbeLights {
-  std::vector<const Light*> skies, deltas;
+  std::vector<const Light*> skies, deltas, discs;  // discs: suns with an angular diameter
   explicit ProbeLights(const Scene& scene);
 };
 
@@ -61,18 +61,19 @@ Rgb probeRayRadiance(const RenderScene& view, const std::vector<Rgb>& radiosity,
                      const ProbeLights& lights, const Eigen::Vector3d& origin,
                      const Eigen::Vector3d& direction, bool* backFace = nullptr);
 
-// A delta light's light at a point: the unit direction towards it and the irradiance (W·m⁻²) on a
-// surface facing it.
-struct DeltaLightArrival {
+// Light from one direction at a point: the unit direction towards it and the irradiance (W·m⁻²)
+// on a surface facing it.
+struct LightArrival {
   Eigen::Vector3d toLight;
   Rgb irradiance;
 };
-// The delta lights of `lights` whose shadow ray from `point` (already lifted off any surface) is
-// clear, with a non-zero spot falloff: a directional light (a sun with an angular diameter taken at
-// its centre direction) by its irradiance, a point or spot light by intensity × falloff / r².
-std::vector<DeltaLightArrival> deltaLightArrivals(const RenderScene& view,
-                                                  const ProbeLights& lights,
-                                                  const Eigen::Vector3d& point);
+// The lights of `lights` not seen by escaped rays, whose shadow ray from `point` (already lifted
+// off any surface) is clear, through the lighting layer's samples (lighting/light_sample.h): each
+// delta light by E⊥ (a point or spot light intensity × falloff / r², a hard sun its irradiance),
+// a sun's disc as the centres of 4 × 4 equal strata of it, each with its share of the irradiance
+// (so a probe in its penumbra sees the part of the disc it sees, as the solve and the renders do).
+std::vector<LightArrival> lightArrivals(const RenderScene& view, const ProbeLights& lights,
+                                        const Eigen::Vector3d& point);
 
 // Irradiance (W/m²) on a surface of unit normal `normal` at the probe, from the coefficients
 // (Ramamoorthi & Hanrahan 2001): E(n) = Σ_k Â_l c_k Y_k(n), Â_0 = π, Â_1 = 2π/3, Â_2 = π/4.

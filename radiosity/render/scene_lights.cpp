@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "radiosity/lighting/light_sample.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/render/scattering.h"
-#include "radiosity/scene/light_shapes.h"
 
 namespace rad {
 namespace {
@@ -14,53 +14,26 @@ namespace {
 // multiplied by its count of rays).
 double powerHeuristic(double a, double b) { return a > 0 ? a * a / (a * a + b * b) : 0.0; }
 
-bool isDelta(const Light& light) {
-  return light.type == LightType::Point || light.type == LightType::Spot ||
-         (light.type == LightType::Directional && light.angularDiameterDegrees <= 0);
-}
-
-// E⊥ cosθ at (x, n) from a point or spot light, 0 behind the surface or outside the cone; sets
-// `toLight` (unit) and `distance`.
-Rgb pointIrradiance(const Light& light, const Eigen::Vector3d& x, const Eigen::Vector3d& n,
-                    Eigen::Vector3d& toLight) {
-  toLight = light.position - x;
-  const double r2 = toLight.squaredNorm();
-  if (!(r2 > 0) || !std::isfinite(r2)) return {};  // on the point, or too far for a double
-  toLight /= std::sqrt(r2);
-  const double cosTheta = n.dot(toLight);
-  if (!(cosTheta > 0)) return {};
-  const double falloff =
-      light.type == LightType::Spot ? spotFalloff(light, light.direction.dot(-toLight)) : 1.0;
-  return light.intensity * (falloff * cosTheta / r2);
-}
-
 }  // namespace
 
 SceneLights::SceneLights(const std::vector<Light>& lights) : lights_(lights) {
   for (size_t k = 0; k < lights_.size(); ++k)
-    (isDelta(lights_[k]) ? deltaLights_ : areaLights_).push_back(static_cast<int>(k));
+    (isDeltaLight(lights_[k]) ? deltaLights_ : areaLights_).push_back(static_cast<int>(k));
 }
 
 void SceneLights::deltaArrivals(const RenderScene& scene, const SurfaceHit& hit, RayCounts& counts,
                                 double time, std::vector<Arrival>& out) const {
   out.clear();
   for (const int k : deltaLights_) {
-    const Light& light = lights_[k];
-    Arrival a;
-    if (light.type == LightType::Directional) {
-      a.direction = -light.direction;
-      const double cosTheta = hit.normal.dot(a.direction);
-      if (!(cosTheta > 0)) continue;
-      ++counts.shadow;
-      if (scene.occludedAlong(scene.spawn(hit, a.direction), a.direction, time)) continue;
-      a.irradiance = light.irradiance * cosTheta;
-    } else {
-      a.irradiance = pointIrradiance(light, hit.position, hit.normal, a.direction);
-      if (a.irradiance.isZero()) continue;
-      ++counts.shadow;
-      if (scene.occluded(scene.spawn(hit, a.direction), light.position, time)) continue;
-    }
-    out.push_back(a);
+    const LightSample s = sampleLight(lights_[k], hit.position, hit.normal, 0, 0);
+    if (!s.found()) continue;
+    ++counts.shadow;
+    const Eigen::Vector3d origin = scene.spawn(hit, s.direction);
+    if (std::isfinite(s.distance)
+            ? scene.occluded(origin, hit.position + s.direction * s.distance, time)
+            : scene.occludedAlong(origin, s.direction, time))
+      continue;
+    out.push_back({s.direction, s.irradiance});
   }
 }
 
@@ -76,29 +49,11 @@ Rgb SceneLights::deltaIrradiance(const RenderScene& scene, const SurfaceHit& hit
 
 Rgb SceneLights::sampleArea(int k, const RenderScene& scene, const SurfaceHit& hit, Point2 u,
                             RayCounts& counts, double bsdfPerLight, double time) const {
-  const Light& light = lights_[areaLights_[k]];
-  Eigen::Vector3d w;
-  Rgb radiance;
-  double lightPdf = 0;
-  if (light.type == LightType::Directional) {
-    w = sunDirection(light, u.x, u.y);
-    radiance = sunRadiance(light);
-    lightPdf = 1 / sunSolidAngle(light);
-  } else if (light.map) {  // an environment or a clear sky: by its map's luminance
-    w = light.map->sample(u.x, u.y, lightPdf);
-    radiance = skyRadiance(light, w);
-    lightPdf = light.map->pdf(w);  // the texel `radiance` came from, should rounding move w
-  } else {  // the sky: cosine-weighted about the normal; the ground below the horizon is black
-    w = cosineDirection(hit.normal, u.x, u.y);
-    radiance = skyRadiance(light, w);
-    lightPdf = std::max(0.0, hit.normal.dot(w)) / M_PI;
-  }
-  const double cosTheta = hit.normal.dot(w);
-  if (!(cosTheta > 0) || radiance.isZero() || !(lightPdf > 0)) return {};
+  const LightSample s = sampleLight(lights_[areaLights_[k]], hit.position, hit.normal, u.x, u.y);
+  if (!s.found()) return {};
   ++counts.shadow;
-  if (scene.occludedAlong(scene.spawn(hit, w), w, time)) return {};
-  const double weight = powerHeuristic(lightPdf, bsdfPerLight * cosTheta / M_PI);
-  return radiance * (cosTheta / lightPdf * weight);
+  if (scene.occludedAlong(scene.spawn(hit, s.direction), s.direction, time)) return {};
+  return s.irradiance * powerHeuristic(s.pdf, bsdfPerLight * s.cosTheta / M_PI);
 }
 
 Rgb SceneLights::sampleIrradiance(const RenderScene& scene, const SurfaceHit& hit, Sampler& sampler,
@@ -111,13 +66,7 @@ Rgb SceneLights::sampleIrradiance(const RenderScene& scene, const SurfaceHit& hi
 
 Rgb SceneLights::escapedRadiance(const Eigen::Vector3d& direction) const {
   Rgb sum;
-  for (const int k : areaLights_) {
-    const Light& light = lights_[k];
-    if (light.type != LightType::Directional)
-      sum += skyRadiance(light, direction);
-    else if (insideSunDisc(light, direction))
-      sum += sunRadiance(light);
-  }
+  for (const int k : areaLights_) sum += radianceAlong(lights_[k], direction);
   return sum;
 }
 
@@ -127,36 +76,16 @@ Rgb SceneLights::escapedRadiance(const Eigen::Vector3d& direction, const Eigen::
   Rgb sum;
   for (const int k : areaLights_) {
     const Light& light = lights_[k];
-    if (light.map)  // sampled by its map: the light sample's density there
-      sum += skyRadiance(light, direction) *
-             powerHeuristic(bsdfPerLight * bsdfPdf, light.map->pdf(direction));
-    else if (light.type == LightType::Sky)
-      sum += skyRadiance(light, direction) * powerHeuristic(bsdfPerLight * bsdfPdf, bsdfPdf);
-    else if (insideSunDisc(light, direction))
-      sum += sunRadiance(light) * powerHeuristic(bsdfPerLight * bsdfPdf, 1 / sunSolidAngle(light));
+    const Rgb radiance = radianceAlong(light, direction);
+    if (!radiance.isZero())
+      sum += radiance * powerHeuristic(bsdfPerLight * bsdfPdf, lightPdf(light, normal, direction));
   }
   return sum;
 }
 
 Rgb SceneLights::unshadowedIrradiance(const Eigen::Vector3d& x, const Eigen::Vector3d& n) const {
   Rgb sum;
-  for (const Light& light : lights_) {
-    switch (light.type) {
-      case LightType::Point:
-      case LightType::Spot: {
-        Eigen::Vector3d toLight;
-        sum += pointIrradiance(light, x, n, toLight);
-        break;
-      }
-      case LightType::Directional:
-        sum += light.irradiance * std::max(0.0, n.dot(-light.direction));
-        break;
-      case LightType::Sky:
-      case LightType::Environment:
-        sum += skyIrradiance(light, n);
-        break;
-    }
-  }
+  for (const Light& light : lights_) sum += rad::unshadowedIrradiance(light, x, n);
   return sum;
 }
 
