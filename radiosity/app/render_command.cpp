@@ -24,8 +24,8 @@
 #include "radiosity/pipeline/thread_limit.h"
 #include "radiosity/render/camera.h"
 #include "radiosity/render/exposure_weights.h"
-#include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
+#include "radiosity/render/interpolated_preview.h"
 #include "radiosity/render/path_expression.h"
 #include "radiosity/render/path_renderer.h"
 #include "radiosity/render/render_methods.h"
@@ -178,7 +178,7 @@ RenderedImages renderImages(const RenderCommandOptions& o, RenderWorld& world,
     RenderSettings quiet = settings;
     quiet.showProgress = false;
     for (const std::vector<Rgb>& term : world.solved()->solution.bounceTerms) {
-      const FinalGather eyePass(renderScene, term, FinalGatherOptions{0});
+      const InterpolatedPreview eyePass(renderScene, term);
       out.bounces.push_back(renderImage(camera, eyePass, quiet).image);
     }
     if (o.gather.gatherRays > 0)

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "radiosity/output/lightmap_content.h"
-#include "radiosity/render/final_gather.h"
+#include "radiosity/render/final_gather_options.h"
 
 namespace rad {
 
@@ -25,7 +25,8 @@ struct BakeSpec {
   LightmapLayoutSpec layout;
   bool lightmap = true;  // false: vertex colours only (--no-lightmap)
   int dilation = 2;      // rings of texels filled around each chart, at most layout.padding
-  // Per texel: the final gather's rays (render/final_gather.h); none: the solution interpolated.
+  // Per texel: the rays of the final gather or of the direct/indirect split
+  // (render/final_gather_options.h); none: the solution interpolated.
   FinalGatherOptions gather = {0, 0};
   LightmapContent content = LightmapContent::Radiance;
   bool directional = false;        // L1 SH pages of the incident light beside the lightmap

@@ -1,5 +1,8 @@
 #include "radiosity/bake/lightmap_pages.h"
 
+#include "radiosity/core/check.h"
+#include "radiosity/render/radiosity_integrator.h"
+
 namespace rad {
 
 LightmapPages::LightmapPages(const Solution& solution, const LightmapLayout& layout,
@@ -10,10 +13,13 @@ LightmapPages::LightmapPages(const Solution& solution, const LightmapLayout& lay
       interpolation_(interpolation),
       exposure_(exposure),
       spec_(spec) {
-  // --gather N, or --gather 0 --light-rays N: the direct light per texel, the indirect part the
-  // solution's (final_gather.h).
+  // --gather N, or --gather 0 --light-rays N: the direct light per texel by shadow rays, the rest
+  // gathered from the solution (final_gather.h) or its indirect part interpolated
+  // (direct_indirect_split.h).
   if (spec.gather.castsRays()) {
-    gather_ = std::make_unique<const FinalGather>(rays.view(), solution.radiosity, spec.gather);
+    gatherPass_ = makeRadiosityIntegrator(rays.view(), solution.radiosity, spec.gather);
+    gather_ = dynamic_cast<const TexelRadiance*>(gatherPass_.get());
+    RAD_CHECK(gather_ != nullptr);
     gatherError_.assign(layout.pages,
                         std::vector<Rgb>(static_cast<size_t>(layout.width) * layout.height));
   }

@@ -10,7 +10,8 @@
 #include "radiosity/bake/texel_evaluation.h"
 #include "radiosity/output/lightmap_bake.h"
 #include "radiosity/pipeline/solution.h"
-#include "radiosity/render/final_gather.h"
+#include "radiosity/render/integrator.h"
+#include "radiosity/render/texel_radiance.h"
 #include "radiosity/visibility/element_exposure.h"
 
 namespace rad {
@@ -43,7 +44,10 @@ class LightmapPages {
   const VertexInterpolation& interpolation_;
   const ElementExposure& exposure_;
   const BakeSpec& spec_;
-  std::unique_ptr<const FinalGather> gather_;
+  // The pass over the solution that casts rays per texel (makeRadiosityIntegrator), and it as a
+  // TexelRadiance; none without a gather.
+  std::unique_ptr<const Integrator> gatherPass_;
+  const TexelRadiance* gather_ = nullptr;
   std::vector<std::vector<Rgb>> gatherError_;
 };
 

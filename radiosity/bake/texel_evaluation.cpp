@@ -46,7 +46,7 @@ Rgb InterpolatedTexels::operator()(int e, const Eigen::Vector3d& b) const {
   return emission_[e] + reflectanceAt(scene_, mesh_, e, b[1], b[2]) * at(vertexIncident_);
 }
 
-GatheredTexels::GatheredTexels(const Solution& solution, const FinalGather& gather,
+GatheredTexels::GatheredTexels(const Solution& solution, const TexelRadiance& gather,
                                const LightmapLayout& layout, LightmapContent content, uint64_t seed)
     : scene_(solution.scene),
       mesh_(*solution.mesh),

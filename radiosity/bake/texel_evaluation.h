@@ -11,7 +11,7 @@
 #include "radiosity/core/rgb.h"
 #include "radiosity/output/lightmap_content.h"
 #include "radiosity/pipeline/solution.h"
-#include "radiosity/render/final_gather.h"
+#include "radiosity/render/texel_radiance.h"
 #include "radiosity/visibility/element_exposure.h"
 
 namespace rad {
@@ -55,8 +55,9 @@ class InterpolatedTexels {
   std::vector<Rgb> vertexIncident_;
 };
 
-// Per-texel final gather (--gather N, or --gather 0 --light-rays N: final_gather.h): direct
-// light by shadow rays to the emitters and gathered light from the solution at every texel, for
+// Per-texel final gather (--gather N, or --gather 0 --light-rays N: any TexelRadiance, from
+// makeRadiosityIntegrator): direct light by shadow rays to the emitters at every texel and the
+// light from the solution (gathered, or its indirect part interpolated), for
 // shadows sharper than the elements. The rays leave from points spread over the texel's
 // footprint on its element: the texel holds its box-filtered mean, as Cycles' bake and the
 // engines' lightmappers give. Each texel draws from its own stream, streamKey(seed,
@@ -64,8 +65,8 @@ class InterpolatedTexels {
 // count.
 class GatheredTexels {
  public:
-  GatheredTexels(const Solution& solution, const FinalGather& gather, const LightmapLayout& layout,
-                 LightmapContent content, uint64_t seed);
+  GatheredTexels(const Solution& solution, const TexelRadiance& gather,
+                 const LightmapLayout& layout, LightmapContent content, uint64_t seed);
 
   // The texel's value, and the Monte Carlo standard error of it (for the confidence map).
   Rgb operator()(int page, int element, const Eigen::Vector3d& barycentric, size_t texel,
@@ -74,7 +75,7 @@ class GatheredTexels {
  private:
   const Scene& scene_;
   const PatchMesh& mesh_;
-  const FinalGather& gather_;
+  const TexelRadiance& gather_;
   const LightmapLayout& layout_;
   bool irradiance_;
   uint64_t seed_;

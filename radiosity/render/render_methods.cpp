@@ -3,9 +3,9 @@
 #include "radiosity/core/errors.h"
 #include "radiosity/render/direct_lighting.h"
 #include "radiosity/render/distribution_ray_tracer.h"
-#include "radiosity/render/final_gather.h"
 #include "radiosity/render/path_renderer.h"
 #include "radiosity/render/path_tracer.h"
+#include "radiosity/render/radiosity_integrator.h"
 #include "radiosity/render/whitted_ray_tracer.h"
 
 namespace rad {
@@ -35,7 +35,7 @@ const std::vector<RenderMethod>& renderMethods() {
       {"radiosity", "L(D|S)*E", "radiosity solution (LD*) with final gather and specular chains",
        true, false, 16,
        [](const MethodInputs& in) {
-         return std::make_unique<FinalGather>(in.scene, *in.radiosity, in.gather);
+         return makeRadiosityIntegrator(in.scene, *in.radiosity, in.gather);
        }},
   };
   return methods;

@@ -8,7 +8,7 @@
 #include "radiosity/core/rgb.h"
 #include "radiosity/render/bdpt.h"
 #include "radiosity/render/camera.h"
-#include "radiosity/render/final_gather.h"
+#include "radiosity/render/final_gather_options.h"
 #include "radiosity/render/image_renderer.h"
 #include "radiosity/render/integrator.h"
 
@@ -23,7 +23,8 @@ constexpr int kRenderGather = 1;
 struct MethodInputs {
   const RenderScene& scene;
   const std::vector<Rgb>* radiosity = nullptr;  // B per element, for methods that need the solve
-  // The final gather's rays per diffuse eye hit (radiosity).
+  // The rays per diffuse eye hit of the pass over the solution (radiosity:
+  // makeRadiosityIntegrator).
   FinalGatherOptions gather = {kRenderGather, 0};
   const Camera* camera = nullptr;          // bdpt: light tracing connects to the camera
   MisHeuristic mis = MisHeuristic::Power;  // bdpt

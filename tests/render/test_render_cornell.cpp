@@ -8,9 +8,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
 #include "radiosity/render/path_tracer.h"
+#include "radiosity/render/radiosity_integrator.h"
 #include "tests/render/render_fixture.h"
 
 namespace rad {
@@ -52,8 +52,8 @@ void expectAgreesWithPathTracer(const FinalGatherOptions& options, int spp, doub
   camera.width = camera.height = 64;
 
   const PairedRender path = renderPair(camera, PathTracer(*s->view), 128, 11);
-  const PairedRender gather =
-      renderPair(camera, FinalGather(*s->view, s->solved.solution.radiosity, options), spp, 12);
+  const PairedRender gather = renderPair(
+      camera, *makeRadiosityIntegrator(*s->view, s->solved.solution.radiosity, options), spp, 12);
 
   double diff2 = 0, ref2 = 0, noise2 = 0;
   Rgb meanPath, meanGather, varMeanPath, varMeanGather;

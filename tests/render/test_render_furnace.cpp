@@ -15,9 +15,12 @@
 #include <string>
 
 #include "radiosity/core/rng.h"
+#include "radiosity/render/direct_indirect_split.h"
 #include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
+#include "radiosity/render/interpolated_preview.h"
 #include "radiosity/render/path_tracer.h"
+#include "radiosity/render/radiosity_integrator.h"
 #include "tests/render/render_fixture.h"
 
 namespace rad {
@@ -106,7 +109,7 @@ TEST(RenderFurnace, FinalGatherWithFewerShadowRaysStaysUnbiased) {
 TEST(RenderFurnace, DirectLightWithTheSolutionsIndirectPartSeesKeOverOneMinusRho) {
   auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
                                    furnaceSolve());
-  const FinalGather hybrid(*s->view, s->solved.solution.radiosity, {0, 4});
+  const DirectIndirectSplit hybrid(*s->view, s->solved.solution.radiosity, 4);
   RenderSettings settings;
   settings.samplesPerPixel = 64;
   settings.showProgress = false;
@@ -125,7 +128,7 @@ TEST(RenderFurnace, DirectLightWithTheSolutionsIndirectPartSeesKeOverOneMinusRho
 TEST(RenderFurnace, TexelsOfTheDirectLightWithTheSolutionsIndirectPartSeeKeOverOneMinusRho) {
   auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
                                    furnaceSolve());
-  const FinalGather hybrid(*s->view, s->solved.solution.radiosity, {0, 64});
+  const DirectIndirectSplit hybrid(*s->view, s->solved.solution.radiosity, 64);
   const int n = s->view->mesh().elementCount();
   double mean = 0;
   for (int e = 0; e < n; ++e) {
@@ -141,13 +144,34 @@ TEST(RenderFurnace, TexelsOfTheDirectLightWithTheSolutionsIndirectPartSeeKeOverO
 TEST(RenderFurnace, InterpolatedRadiosityIsExactWithoutNoise) {
   auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
                                    furnaceSolve());
-  const FinalGather preview(*s->view, s->solved.solution.radiosity, {0});
+  const InterpolatedPreview preview(*s->view, s->solved.solution.radiosity);
   RenderSettings settings;
   settings.samplesPerPixel = 2;
   settings.showProgress = false;
   const RenderOutput out = renderImage(furnaceCamera(), preview, settings);
   for (const Rgb& p : out.image.pixels)
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(p[c], kExpected, 1e-5);
+}
+
+// makeRadiosityIntegrator, the one place --gather and --light-rays choose the pass: the gather for
+// gatherRays > 0 (whatever lightRays), the split for gatherRays 0 with lightRays, the preview
+// otherwise; the two that cast rays per hit are what a bake needs (TexelRadiance).
+TEST(RenderFurnace, TheRayCountsChooseThePassOverTheSolution) {
+  auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
+                                   furnaceSolve());
+  const std::vector<Rgb>& b = s->solved.solution.radiosity;
+  const auto gather = makeRadiosityIntegrator(*s->view, b, {4, 2});
+  EXPECT_NE(dynamic_cast<const FinalGather*>(gather.get()), nullptr);
+  EXPECT_NE(dynamic_cast<const TexelRadiance*>(gather.get()), nullptr);
+  EXPECT_EQ(gather->name(), "radiosity (final gather, 4 rays)");
+  const auto split = makeRadiosityIntegrator(*s->view, b, {0, 3});
+  EXPECT_NE(dynamic_cast<const DirectIndirectSplit*>(split.get()), nullptr);
+  EXPECT_NE(dynamic_cast<const TexelRadiance*>(split.get()), nullptr);
+  EXPECT_EQ(split->name(), "radiosity (direct by 3 shadow rays, indirect from the solution)");
+  const auto preview = makeRadiosityIntegrator(*s->view, b, {0, 0});
+  EXPECT_NE(dynamic_cast<const InterpolatedPreview*>(preview.get()), nullptr);
+  EXPECT_EQ(dynamic_cast<const TexelRadiance*>(preview.get()), nullptr);
+  EXPECT_EQ(preview->name(), "radiosity (interpolated, no gather)");
 }
 
 TEST(RenderFurnace, PathTracerSeesKeOverOneMinusRhoEverywhere) {

@@ -21,9 +21,11 @@
 #include "radiosity/core/rng.h"
 #include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/render/bdpt.h"
+#include "radiosity/render/direct_indirect_split.h"
 #include "radiosity/render/direct_lighting.h"
 #include "radiosity/render/distribution_ray_tracer.h"
 #include "radiosity/render/final_gather.h"
+#include "radiosity/render/interpolated_preview.h"
 #include "radiosity/render/path_tracer.h"
 #include "radiosity/render/whitted_ray_tracer.h"
 #include "radiosity/scene/light_shapes.h"
@@ -425,12 +427,11 @@ TEST(RenderLights, PathTracerBdptAndFinalGatherAgreeOnALitBox) {
   const Estimate bdpt = meanOver(Bdpt(*w->view, w->camera), 1024);
   const Estimate gather =
       meanOver(FinalGather(*w->view, w->solved.solution.radiosity, FinalGatherOptions{16}), 64);
-  const Estimate preview =
-      meanOver(FinalGather(*w->view, w->solved.solution.radiosity, FinalGatherOptions{0}), 2);
+  const Estimate preview = meanOver(InterpolatedPreview(*w->view, w->solved.solution.radiosity), 2);
   // The direct light at the hit, the solution's indirect part interpolated: the sun, sky and lamp
   // each counted once (their mean share taken out of the solution's B).
   const Estimate hybrid =
-      meanOver(FinalGather(*w->view, w->solved.solution.radiosity, FinalGatherOptions{0, 4}), 64);
+      meanOver(DirectIndirectSplit(*w->view, w->solved.solution.radiosity, 4), 64);
   for (int c = 0; c < 3; ++c) {
     const double noise = std::hypot(path.sigma[c], bdpt.sigma[c]);
     ASSERT_GT(noise, 0);

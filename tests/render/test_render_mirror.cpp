@@ -12,6 +12,7 @@
 
 #include "radiosity/render/camera.h"
 #include "radiosity/render/final_gather.h"
+#include "radiosity/render/interpolated_preview.h"
 #include "radiosity/render/path_tracer.h"
 #include "radiosity/render/whitted_ray_tracer.h"
 #include "tests/render/render_fixture.h"
@@ -101,7 +102,7 @@ testing::SolvedScene* MirrorRoom::scene_ = nullptr;
 
 TEST_F(MirrorRoom, InterpolatedRadiosityInTheMirror) {
   expectMirrorShowsReflectedRadiance(
-      FinalGather(*scene_->view, scene_->solved.solution.radiosity, {0}),
+      InterpolatedPreview(*scene_->view, scene_->solved.solution.radiosity),
       scene_->caster->surfaceOffset(), "gather 0");
 }
 

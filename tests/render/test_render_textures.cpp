@@ -10,7 +10,7 @@
 
 #include "radiosity/core/rng.h"
 #include "radiosity/pipeline/solve_pipeline.h"
-#include "radiosity/render/final_gather.h"
+#include "radiosity/render/direct_indirect_split.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/texture.h"
 #include "radiosity/visibility/ray_caster.h"
@@ -151,7 +151,7 @@ TEST(TexturedRender, InterpolatedRadiosityViewShowsTheTexelsInsideElements) {
   const Solution& s = result.solution;
   const RayCaster caster(*s.mesh);
   const RenderScene view(s.scene, *s.mesh, caster);
-  const FinalGather preview(view, s.radiosity, {0, 16});
+  const DirectIndirectSplit preview(view, s.radiosity, 16);
   Rng rng(1);
   RayCounts counts;
   // Straight down onto points of the floor: on an open plane under the sky every point

@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "radiosity/pipeline/solve_pipeline.h"
-#include "radiosity/render/final_gather.h"
 #include "radiosity/render/image_renderer.h"
+#include "radiosity/render/interpolated_preview.h"
 #include "radiosity/render/render_scene.h"
 #include "radiosity/scene/two_sided.h"
 #include "tests/support/test_scenes.h"
@@ -34,7 +34,7 @@ ImageRgb viewFromAbove(bool twoSided) {
   const SolveResult solved = solveScene(scene, options);
   const RayCaster caster(*solved.solution.mesh, solved.solution.scene);
   const RenderScene view(solved.solution.scene, *solved.solution.mesh, caster);
-  const FinalGather preview(view, solved.solution.radiosity, {0});
+  const InterpolatedPreview preview(view, solved.solution.radiosity);
   Camera camera;
   camera.position = {0, 3, 0};
   camera.lookAt = {0, 0, 0};

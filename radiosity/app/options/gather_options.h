@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "radiosity/render/final_gather.h"
+#include "radiosity/render/final_gather_options.h"
 
 namespace rad {
 

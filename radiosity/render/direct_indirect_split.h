@@ -1,0 +1,66 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "meshing/vertex_interpolation.h"
+#include "radiosity/render/direct_light_estimator.h"
+#include "radiosity/render/integrator.h"
+#include "radiosity/render/texel_radiance.h"
+#include "radiosity/visibility/element_exposure.h"
+
+namespace rad {
+
+// The eye pass over a radiosity solution that splits the light at the first diffuse hit
+// (`--gather 0 --light-rays N`): the direct light by its own N shadow rays (a shadow's edge, a
+// light's fall-off, exact however coarse the mesh; DirectLightEstimator, in an MIS pair with N
+// cosine rays that only look for the lights), the interreflected light from the solution,
+// interpolated: no gather ray, so no gather noise; the indirect part's discretisation is the bias,
+// small where the indirect light varies slowly (docs/rendering.md). Mirrors and glass continue the
+// eye ray (DiffuseEyeHit).
+class DirectIndirectSplit : public Integrator, public TexelRadiance {
+ public:
+  // `radiosity`: B per element (W/m²); emission E = π·Ke comes from the materials.
+  DirectIndirectSplit(const RenderScene& scene, const std::vector<Rgb>& radiosity, int lightRays);
+
+  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
+               RayCounts& counts) const override;
+  // Shadow-ray points and cosine directions come from `sampler` (stratified across the pixel).
+  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
+               RayCounts& counts) const override;
+  std::string name() const override;
+
+  // Ke + ρ·(direct + the interpolated indirect light); a buried point takes no indirect light.
+  using TexelRadiance::outgoingRadiance;
+  Rgb outgoingRadiance(int element, const TexelFootprint& footprint, Sampler& sampler,
+                       RayCounts& counts, Rgb& standardError) const override;
+
+ private:
+  // The solution's indirect incident light H_i/π at barycentrics (u, v) of `element`, from
+  // vertexIndirect_.
+  Rgb interpolatedIndirect(int element, double u, double v) const;
+  // Per element: the mean over its exposed points of the direct irradiance / π, from the
+  // emitters and the scene lights; the latter's part alone (sun, sky, lamps). Elements of no
+  // reflectance `rho` (and mirrors, glass) are left at 0.
+  std::vector<Rgb> meanDirectLight(const std::vector<Rgb>& rho) const;
+  std::vector<Rgb> meanSceneLight(const std::vector<Rgb>& rho) const;
+  // The mean over the cosine rays of what they find of the lights straight ahead (lightAlong).
+  Rgb lightsAlong(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
+                  Rgb* variance = nullptr, const TexelFootprint* footprint = nullptr) const;
+  // What a cosine-sampled ray from `from` finds of the lights straight ahead (an emitter, the
+  // sky), MIS-weighted against one shadow ray per cosine ray.
+  Rgb lightAlong(const SurfaceHit& from, const Eigen::Vector3d& direction, RayCounts& counts) const;
+
+  const RenderScene& scene_;
+  DirectLightEstimator direct_;
+  // The buried parts of the elements (element_exposure.h): the mean light of an element is over
+  // its exposed points, and vertex values weigh elements by their exposed areas.
+  ElementExposure exposure_;
+  VertexInterpolation interpolation_;
+  // Per output vertex, the solution's reflected light less its direct part, divided by ρ: the
+  // albedo-free indirect light H_i/π that the point's ρ multiplies.
+  std::vector<Eigen::Vector3d> vertexIndirect_;
+};
+
+}  // namespace rad

@@ -1,0 +1,22 @@
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "radiosity/core/rgb.h"
+#include "radiosity/render/final_gather_options.h"
+#include "radiosity/render/integrator.h"
+#include "radiosity/render/render_scene.h"
+
+namespace rad {
+
+// The eye pass over a radiosity solution (`radiosity`: B per element) that `options` choose, the
+// one place they decide it: gatherRays > 0, FinalGather; gatherRays 0 with lightRays,
+// DirectIndirectSplit; neither, InterpolatedPreview. The two that cast rays per hit are also
+// TexelRadiance (texel_radiance.h), for the bake. Holds references to `scene` and not to
+// `radiosity`.
+std::unique_ptr<Integrator> makeRadiosityIntegrator(const RenderScene& scene,
+                                                    const std::vector<Rgb>& radiosity,
+                                                    FinalGatherOptions options);
+
+}  // namespace rad
