@@ -36,6 +36,13 @@ struct Solution {
   // B at each element's 3 Gauss points (analytic factors with 3 receiver points and progressive
   // shooting; their mean is `radiosity`), or empty: what vertex colours interpolate from.
   std::vector<std::array<Rgb, 3>> pointRadiosity;
+  // E_d per element (W/m²): the irradiance each element received straight from the emitters and
+  // the lights, as the solve computed it (the lights' first shot; the emitters' light through the
+  // solver's own form factors, or a hierarchical solve's shadow rays to them), so that
+  // B − E − ρ E_d is the interreflected light by the same estimator as B. 0 on black elements
+  // (ρ = 0: they pass nothing on). Empty when not known (a saved solution written before
+  // elements.csv had the Ed columns).
+  std::vector<Rgb> directIrradiance;
   // Unshot power per element (W) a shooting solver still held; empty for gathering solvers.
   std::vector<Rgb> unshot;
   // With keepBounceTerms: term k = B_k − B_{k−1} = (rho F)^k E of the Jacobi iterates, k ≥ 0.
