@@ -74,10 +74,12 @@ uint64_t parseMask(std::string_view text, const std::string& file, int line) {
 }  // namespace
 
 void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vector<Rgb>& radiosity,
-                      const std::vector<uint64_t>* buriedCells) {
+                      const std::vector<uint64_t>* buriedCells,
+                      const std::vector<Rgb>* directIrradiance) {
   const int count = mesh.elementCount();
   RAD_CHECK_EQ(radiosity.size(), count);
   if (buriedCells) RAD_CHECK_EQ(buriedCells->size(), count);
+  if (directIrradiance) RAD_CHECK_EQ(directIrradiance->size(), count);
   // std::to_chars writes the shortest text that reads back as the same double, with no locale or
   // stream state to consult per number: writing the outputs was a large part of a relight's time.
   // Rows are formatted into a buffer and written in blocks.
@@ -91,6 +93,7 @@ void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vecto
     block.push_back(after);
   };
   block += kElementsCsvHeader;
+  if (directIrradiance) block += std::string(",") + kDirectIrradianceColumns;
   if (buriedCells) block += std::string(",") + kBuriedCellsColumn;
   block += '\n';
   for (int e = 0; e < count; ++e) {
@@ -104,15 +107,19 @@ void writeElementsCsv(std::ostream& out, const PatchMesh& mesh, const std::vecto
     field(mesh.area(e), ',');
     for (const double v : {c.x(), c.y(), c.z(), n.x(), n.y(), n.z(), b.r, b.g, b.b, l.r, l.g})
       field(v, ',');
+    field(l.b, directIrradiance || buriedCells ? ',' : '\n');
+    if (directIrradiance) {
+      const Rgb& d = (*directIrradiance)[e];
+      field(d.r, ',');
+      field(d.g, ',');
+      field(d.b, buriedCells ? ',' : '\n');
+    }
     if (buriedCells) {
-      field(l.b, ',');
       const auto [end, error] =
           std::to_chars(number, number + sizeof number, (*buriedCells)[e], 16);
       RAD_CHECK(error == std::errc());
       block.append(number, end);
       block.push_back('\n');
-    } else {
-      field(l.b, '\n');
     }
     if (block.size() >= kBlockBytes) {
       out.write(block.data(), static_cast<std::streamsize>(block.size()));
@@ -137,15 +144,30 @@ ElementsCsv readElementsCsv(std::istream& in, const std::string& source) {
     return true;
   };
   std::string_view line;
-  const std::string withBuriedCells = std::string(kElementsCsvHeader) + "," + kBuriedCellsColumn;
   ElementsCsv csv;
-  if (!next(line) || (line != kElementsCsvHeader && line != withBuriedCells))
+  // The header: kElementsCsvHeader, then optionally the Ed columns, then optionally buried_cells.
+  const std::string_view base = kElementsCsvHeader;
+  const std::string ed = std::string(",") + kDirectIrradianceColumns;
+  const std::string buried = std::string(",") + kBuriedCellsColumn;
+  std::string_view header;
+  const auto take = [&header](std::string_view part) {
+    if (header.substr(0, part.size()) != part) return false;
+    header.remove_prefix(part.size());
+    return true;
+  };
+  bool known = next(header) && take(base);
+  if (known) {
+    csv.hasDirectIrradiance = take(ed);
+    csv.hasBuriedCells = take(buried);
+    known = header.empty();
+  }
+  if (!known)
     throw InputError(source, 1,
                      std::string("not an elements CSV (header missing; expected '") +
-                         kElementsCsvHeader + "', optionally followed by '," + kBuriedCellsColumn +
-                         "')");
-  csv.hasBuriedCells = line == withBuriedCells;
-  const size_t fields = csv.hasBuriedCells ? 17 : 16;
+                         kElementsCsvHeader + "', optionally followed by '" + ed + "' and by '" +
+                         buried + "')");
+  constexpr int firstEd = 16;  // the first Ed column, after L_b
+  const size_t fields = 16 + (csv.hasDirectIrradiance ? 3 : 0) + (csv.hasBuriedCells ? 1 : 0);
   std::vector<ElementsCsvRow>& rows = csv.rows;
   rows.reserve(static_cast<size_t>(std::count(text.begin(), text.end(), '\n')));
   for (int lineNumber = 2; next(line); ++lineNumber) {
@@ -166,7 +188,15 @@ ElementsCsv readElementsCsv(std::istream& in, const std::string& source) {
     row.normal = Eigen::Vector3d(number(7), number(8), number(9));
     row.radiosity = Rgb(number(10), number(11), number(12));
     row.radiance = Rgb(number(13), number(14), number(15));
-    if (csv.hasBuriedCells) row.buriedCells = parseMask(f[16], source, lineNumber);
+    if (csv.hasDirectIrradiance) {
+      row.directIrradiance = Rgb(number(firstEd), number(firstEd + 1), number(firstEd + 2));
+      for (int c = 0; c < 3; ++c)
+        if (row.directIrradiance[c] < 0)
+          throw InputError(source, lineNumber,
+                           std::string("Ed_") + "rgb"[c] + " (direct irradiance) must be " +
+                               "non-negative, not '" + std::string(f[firstEd + c]) + "'");
+    }
+    if (csv.hasBuriedCells) row.buriedCells = parseMask(f.back(), source, lineNumber);
     rows.push_back(row);
   }
   return csv;

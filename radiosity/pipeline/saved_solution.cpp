@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/errors.h"
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/pipeline/fingerprint.h"
@@ -240,6 +241,11 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
     throw InputError(csvPath, lineNumber,
                      "the saved solution has " + std::to_string(element) +
                          " elements, the re-meshed scene " + std::to_string(count));
+  // E_d as the solve computed it, where the file keeps it (the Ed columns); left empty otherwise.
+  if (csv.hasDirectIrradiance) {
+    result.solution.directIrradiance.resize(count);
+    for (int e = 0; e < count; ++e) result.solution.directIrradiance[e] = rows[e].directIrradiance;
+  }
   result.solution.scene = relit ? std::move(*relit) : scene;
   // The exposed areas the solve had: the outputs weigh vertex values by them. Read back where the
   // file keeps the buried cells; found again by probe rays (a BVH and 0.3 s on a large scene)
@@ -266,9 +272,13 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
 
 void writeSolutionElementsCsv(std::ostream& out, const Solution& solution) {
   const PatchMesh& mesh = *solution.mesh;
-  if (!solution.exposure) return writeElementsCsv(out, mesh, solution.radiosity);
+  const std::vector<Rgb>& direct = solution.directIrradiance;
+  if (!direct.empty()) RAD_CHECK_EQ(direct.size(), mesh.elementCount());
+  const std::vector<Rgb>* directColumns = direct.empty() ? nullptr : &direct;
+  if (!solution.exposure)
+    return writeElementsCsv(out, mesh, solution.radiosity, nullptr, directColumns);
   const std::vector<uint64_t> buried = solution.exposure->allBuriedCells(mesh.elementCount());
-  writeElementsCsv(out, mesh, solution.radiosity, &buried);
+  writeElementsCsv(out, mesh, solution.radiosity, &buried, directColumns);
 }
 
 void writeSavedSolution(AtomicFile& csv, AtomicFile& json, const SolveResult& result,

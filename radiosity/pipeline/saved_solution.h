@@ -15,8 +15,9 @@ namespace rad {
 // `render --method radiosity`. render, bake and view reuse it when the scene and the solve
 // options match, so that renders from other cameras or with other sample counts skip the solve.
 //
-// Reuse re-meshes the scene (uniform meshing is deterministic) and reads B back; it needs the
-// fingerprint of the scene's content and of every solve option that shapes the mesh or B to match.
+// Reuse re-meshes the scene (uniform meshing is deterministic) and reads B back (and E_d, where
+// the CSV has the Ed columns); it needs the fingerprint of the scene's content and of every solve
+// option that shapes the mesh or B to match.
 // A solution from adaptive refinement is not kept: its mesh depends on the solve.
 
 // Hash of the loaded scene (positions, polygons, materials) and the solve options that decide
@@ -33,8 +34,10 @@ bool solutionIsReusable(const SolveOptions& options);
 std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene& scene,
                                              const SolveOptions& options, std::string& whyNot);
 
-// The elements CSV of `solution` (elements.csv, solution.csv): with the buried cells of its
-// exposure where it kept one, which a reuse then reads instead of casting probe rays again.
+// The elements CSV of `solution` (elements.csv, solution.csv): with its direct irradiance E_d
+// (the Ed columns) where it has one, which a reuse reads back into Solution::directIrradiance
+// (RAD_CHECK: one per element), and with the buried cells of its exposure where it kept one,
+// which a reuse then reads instead of casting probe rays again.
 void writeSolutionElementsCsv(std::ostream& out, const Solution& solution);
 
 // Writes solution.csv and solution.json into the temporary files `csv` and `json` (the caller

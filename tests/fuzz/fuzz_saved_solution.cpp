@@ -5,6 +5,7 @@
 // fingerprint to the relit entry's overrides and the CSV's rows. The scene: a small room with a
 // lamp material and a sun and a sky. Every error must be an InputError naming solution.json or the
 // CSV; a solution it accepts holds one finite, non-negative B per element of the re-meshed scene,
+// E_d (from the CSV's Ed columns) either not at all or one finite, non-negative value per element,
 // an exposure (from the CSV's buried cells, or probe rays) and the scene's lights. Findings:
 // crashes, sanitizer reports, and any other exception.
 #include <Eigen/Core>
@@ -132,6 +133,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   check(s.mesh != nullptr && s.radiosity.size() == static_cast<size_t>(s.mesh->elementCount()),
         "not one B per element");
   for (const rad::Rgb& b : s.radiosity) check(b.isFinite() && b.minComponent() >= 0, "bad B");
+  check(s.directIrradiance.empty() || s.directIrradiance.size() == s.radiosity.size(),
+        "E_d neither absent nor one per element");
+  for (const rad::Rgb& d : s.directIrradiance)
+    check(d.isFinite() && d.minComponent() >= 0, "bad E_d");
   check(s.scene.lights.size() == f.scene.lights.size(), "the lights changed in number");
   check(s.scene.materials.size() == f.scene.materials.size(), "the materials changed in number");
   check(result->report.reusedSavedSolution, "not reported as reused");

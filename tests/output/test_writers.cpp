@@ -375,6 +375,7 @@ TEST(ElementsCsvReader, RoundTripIsBitExact) {
   }
   const ElementsCsv csv = readElementsCsv(path.string());
   EXPECT_FALSE(csv.hasBuriedCells);
+  EXPECT_FALSE(csv.hasDirectIrradiance);
   const std::vector<ElementsCsvRow>& rows = csv.rows;
   ASSERT_EQ(rows.size(), 4u);
   for (int e = 0; e < 4; ++e) {
@@ -410,6 +411,158 @@ TEST(ElementsCsvReader, BuriedCellsReadBackAsWritten) {
   EXPECT_NE(text.find(",ffffffffffffffff\n"), std::string::npos);  // hexadecimal, 16 digits
   const std::vector<uint64_t> tooFew(3);
   EXPECT_THROW(writeElementsCsv(file, mesh, std::vector<Rgb>(4), &tooFew), CheckFailure);
+}
+
+// The direct irradiance columns (Ed_r,Ed_g,Ed_b, after L_b and before buried_cells): every value
+// reads back bit-exact, with and without the buried cells after them.
+TEST(ElementsCsvReader, DirectIrradianceReadsBackBitExact) {
+  const PatchMesh mesh = foldedPair(3, 5);
+  const std::vector<Rgb> b = {Rgb(1, 2, 3), Rgb(4, 5, 6), Rgb(7, 8, 9), Rgb(0.5, 0.25, 0.125)};
+  // Values with no short decimal form, a subnormal, a huge value and zeros (black elements).
+  const std::vector<Rgb> direct = {Rgb(1.0 / 3.0, 2.0 / 7.0, 0.1 * kPi),
+                                   Rgb(1e-300, 12345.678901234567, 0), Rgb(0, 0, 0),
+                                   Rgb(4.9406564584124654e-324, 1.7976931348623157e308, 0.1)};
+  const std::vector<uint64_t> buried = {0, ~uint64_t{0}, uint64_t{1} << 63, 0x00ff00f0000a0001};
+  for (const bool withBuried : {false, true}) {
+    SCOPED_TRACE(withBuried ? "with buried_cells" : "without buried_cells");
+    std::stringstream file;
+    writeElementsCsv(file, mesh, b, withBuried ? &buried : nullptr, &direct);
+    const std::string text = file.str();
+    EXPECT_EQ(text.substr(0, text.find('\n')), std::string(kElementsCsvHeader) + ",Ed_r,Ed_g,Ed_b" +
+                                                   (withBuried ? ",buried_cells" : ""));
+    // Row 0's Ed values follow its L_b, in the shortest round-trip text.
+    const std::string row0 = text.substr(text.find('\n') + 1);
+    std::vector<std::string> f;
+    std::istringstream fields(row0.substr(0, row0.find('\n')));
+    for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+    ASSERT_EQ(f.size(), withBuried ? 20u : 19u);
+    EXPECT_EQ(f[16], "0.3333333333333333");
+    EXPECT_EQ(f[17], "0.2857142857142857");
+    const ElementsCsv csv = readElementsCsv(file, "sol.csv");
+    EXPECT_TRUE(csv.hasDirectIrradiance);
+    EXPECT_EQ(csv.hasBuriedCells, withBuried);
+    ASSERT_EQ(csv.rows.size(), 4u);
+    for (int e = 0; e < 4; ++e) {
+      const ElementsCsvRow& row = csv.rows[e];
+      EXPECT_EQ(row.element, e);
+      EXPECT_EQ(row.centroid, mesh.centroid(e));
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(row.directIrradiance[c], direct[e][c]) << e << " " << c;
+        EXPECT_EQ(row.radiosity[c], b[e][c]) << e << " " << c;
+        EXPECT_EQ(row.radiance[c], b[e][c] / M_PI) << e << " " << c;
+      }
+      EXPECT_EQ(row.buriedCells, withBuried ? buried[e] : 0u) << e;
+    }
+  }
+  // One value per element, or the writer refuses.
+  std::ostringstream out;
+  const std::vector<Rgb> tooFew(3);
+  EXPECT_THROW(writeElementsCsv(out, mesh, b, nullptr, &tooFew), CheckFailure);
+  EXPECT_THROW(writeElementsCsv(out, mesh, b, &buried, &tooFew), CheckFailure);
+}
+
+// A file written before the Ed columns were kept (with or without buried_cells) reads as before:
+// no direct irradiance, every row's 0.
+TEST(ElementsCsvReader, AnOlderFileWithoutTheEdColumnsStillReads) {
+  const std::string row0 =
+      "0,0,3,0.5,0.6666666666666666,0,0.3333333333333333,0,1,0,1.5,2.5,3.5,"
+      "0.477464829275686,0.7957747154594768,1.1140846016432675";
+  for (const bool withBuried : {false, true}) {
+    std::istringstream in(std::string(kElementsCsvHeader) + (withBuried ? ",buried_cells" : "") +
+                          "\n" + row0 + (withBuried ? ",f0" : "") + "\n");
+    const ElementsCsv csv = readElementsCsv(in, "old.csv");
+    EXPECT_FALSE(csv.hasDirectIrradiance);
+    EXPECT_EQ(csv.hasBuriedCells, withBuried);
+    ASSERT_EQ(csv.rows.size(), 1u);
+    EXPECT_EQ(csv.rows[0].material, 3);
+    EXPECT_EQ(csv.rows[0].radiosity.g, 2.5);
+    EXPECT_EQ(csv.rows[0].buriedCells, withBuried ? 0xf0u : 0u);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(csv.rows[0].directIrradiance[c], 0.0);
+  }
+}
+
+// Bad Ed values and rows that do not fit the Ed header: an InputError naming the file and line.
+TEST(ElementsCsvReader, BadDirectIrradianceNamesFileAndLine) {
+  const std::vector<Rgb> direct = {Rgb(1, 2, 3), Rgb(4, 5, 6)};
+  const std::vector<uint64_t> buried = {5, 6};
+  for (const bool withBuried : {false, true}) {
+    SCOPED_TRACE(withBuried ? "with buried_cells" : "without buried_cells");
+    std::ostringstream good;
+    writeElementsCsv(good, unitSquare(), std::vector<Rgb>(2, Rgb::all(1)),
+                     withBuried ? &buried : nullptr, &direct);
+    const std::string text = good.str();
+    const std::string header = text.substr(0, text.find('\n') + 1);
+    const std::string rows = text.substr(header.size());
+    const std::string row0 = rows.substr(0, rows.find('\n') + 1);
+    const std::string row1 = rows.substr(row0.size());
+    // Row 1's fields, and a row of fields joined again.
+    auto row1Fields = [&] {
+      std::vector<std::string> f;
+      std::istringstream fields(row1.substr(0, row1.find('\n')));
+      for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+      return f;
+    };
+    auto joined = [](const std::vector<std::string>& f) {
+      std::string out;
+      for (size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
+      return out + "\n";
+    };
+    // The file with row 1's (line 3's) Ed field `k` (0..2) replaced.
+    auto withEd = [&](int k, const std::string& value) {
+      std::vector<std::string> f = row1Fields();
+      f[static_cast<size_t>(16 + k)] = value;
+      return header + row0 + joined(f);
+    };
+    auto expectError = [](const std::string& content, const std::string& message) {
+      std::istringstream in(content);
+      try {
+        readElementsCsv(in, "sol.csv");
+        ADD_FAILURE() << "no error for: " << content;
+      } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+      }
+    };
+    // The unchanged file reads, so that each error below is the change's.
+    {
+      std::istringstream in(withEd(0, "4"));
+      EXPECT_EQ(readElementsCsv(in, "sol.csv").rows[1].directIrradiance.r, 4.0);
+    }
+    expectError(withEd(0, "-1"),
+                "sol.csv:3: Ed_r (direct irradiance) must be non-negative, not '-1'");
+    expectError(withEd(2, "-1e-300"),
+                "sol.csv:3: Ed_b (direct irradiance) must be non-negative, not '-1e-300'");
+    expectError(withEd(1, "x"), "sol.csv:3: not a finite number: 'x'");
+    expectError(withEd(1, "nan"), "sol.csv:3: not a finite number: 'nan'");
+    expectError(withEd(2, "inf"), "sol.csv:3: not a finite number: 'inf'");
+    expectError(withEd(0, ""), "sol.csv:3: not a finite number: ''");
+    // A row without the Ed columns under the header with them, and one with a field too many.
+    const size_t expected = withBuried ? 20 : 19;
+    const std::string count = "expected " + std::to_string(expected) + " comma-separated fields";
+    std::vector<std::string> withoutEd = row1Fields();
+    withoutEd.erase(withoutEd.begin() + 16, withoutEd.begin() + 19);
+    expectError(header + row0 + joined(withoutEd),
+                "sol.csv:3: " + count + ", found " + std::to_string(expected - 3));
+    expectError(header + row0 + row1.substr(0, row1.size() - 1) + ",0\n",
+                "sol.csv:3: " + count + ", found " + std::to_string(expected + 1));
+    // Rows with the Ed columns under a header without them.
+    expectError(std::string(kElementsCsvHeader) + (withBuried ? ",buried_cells\n" : "\n") + row0,
+                "sol.csv:2: expected " + std::to_string(withBuried ? 17 : 16));
+  }
+  // Headers out of order or incomplete are not elements CSVs.
+  for (const std::string& header :
+       {std::string(kElementsCsvHeader) + ",buried_cells,Ed_r,Ed_g,Ed_b",
+        std::string(kElementsCsvHeader) + ",Ed_r,Ed_g",
+        std::string(kElementsCsvHeader) + ",Ed_r,Ed_g,Ed_b,",
+        std::string(kElementsCsvHeader) + ",Ed_b,Ed_g,Ed_r"}) {
+    std::istringstream in(header + "\n");
+    try {
+      readElementsCsv(in, "sol.csv");
+      ADD_FAILURE() << "no error for: " << header;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("sol.csv:1: not an elements CSV"), std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 TEST(ElementsCsvReader, BadBuriedCellsNameFileAndLine) {
