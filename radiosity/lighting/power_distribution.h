@@ -8,10 +8,12 @@
 namespace rad {
 
 // The power of an emitting element, the weight by which every estimator picks emitters: its area
-// times the luminance of its emission (Ke or E = πKe alike: only the proportions count). The
-// solve's emitter first shot (pipeline/emitter_first_shot) and the renders' emitter samples
+// times its emission summed over the channels (Ke or E = πKe alike: only the proportions count).
+// The sum, not the luminance: an image's error is every channel's, and weighing by luminance left
+// a red or blue lamp's light to few samples (the staircase's split at 16 spp: 14% more error).
+// The solve's emitter first shot (pipeline/emitter_first_shot) and the renders' emitter samples
 // (render/emitter_sampler) both pick by it.
-inline double emitterPower(double area, const Rgb& emission) { return area * emission.luminance(); }
+inline double emitterPower(double area, const Rgb& emission) { return area * emission.sum(); }
 
 // A choice among n items in proportion to their weights (powers), by one number u in [0, 1):
 // bright, large emitters get the samples. The items keep the order they are given in, so a

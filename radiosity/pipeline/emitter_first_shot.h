@@ -31,12 +31,12 @@ namespace rad {
 //
 // D_e is the mean over kAreaStrata² points stratified over the element's exposed area; each point
 // sends `raysPerPoint` samples, an emitting element picked in proportion to its power
-// A·luminance(E), the picks of one point stratified along the power in Morton order (so they
-// spread over an emitter like a jittered grid). Far from the picked element (kFarRadii of its
-// radii), a uniform point of it stands for it: E·A·cos·cos/(π r²) times the shadow ray's
-// visibility, unbiased in a penumbra; nearer, its unoccluded point-to-triangle factor in closed
-// form (bounded however near) times the visibility of a point on it (one-sided: only the front
-// of an emitter emits, only the front of a receiver receives).
+// emitterPower (A × E summed over the channels), the picks of one point stratified along the power
+// in Morton order (so they spread over an emitter like a jittered grid). Far from the picked
+// element (kFarRadii of its radii), a uniform point of it stands for it: E·A·cos·cos/(π r²) times
+// the shadow ray's visibility, unbiased in a penumbra; nearer, its unoccluded point-to-triangle
+// factor in closed form (bounded however near) times the visibility of a point on it (one-sided:
+// only the front of an emitter emits, only the front of a receiver receives).
 class EmitterFirstShot {
  public:
   // The shadow rays per element a hierarchical solve gives the emitters' direct light: half

@@ -20,9 +20,9 @@ struct EmitterSample {
 };
 
 // Picks emitter elements with probability proportional to their power (emitterPower: area ×
-// Ke's luminance, lighting/power_distribution.h), then a uniform point on the chosen triangle:
-// bright, large emitters get the samples, and the density per area is the same on every element of
-// a uniform light.
+// Ke summed over the channels, lighting/power_distribution.h), then a uniform point on the chosen
+// triangle: bright, large emitters get the samples, and the density per area is the same on every
+// element of a uniform light.
 class EmitterSampler {
  public:
   EmitterSampler(const Scene& scene, const PatchMesh& mesh);

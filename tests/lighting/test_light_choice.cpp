@@ -80,7 +80,7 @@ TEST(PowerDistribution, PicksInProportionAndNeverAZeroWeight) {
   EXPECT_EQ(picks[2], 600);
   EXPECT_EQ(picks[3], 200);
   EXPECT_EQ(power.pick(std::nextafter(1.0, 0.0)), 3u);
-  EXPECT_DOUBLE_EQ(emitterPower(2, {1, 1, 1}), 2 * Rgb(1, 1, 1).luminance());
+  EXPECT_DOUBLE_EQ(emitterPower(2, {1, 2, 3}), 12);
 }
 
 }  // namespace
