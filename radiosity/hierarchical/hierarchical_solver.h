@@ -40,6 +40,10 @@ class HierarchicalSolver : public Solver {
   void step() override;
   double progress() const override { return residual_; }
   const std::vector<Rgb>& solution() const override { return solution_; }
+  // Empty: a link gathers a source node's B as its rays saw it and a cluster's as its bins show
+  // it, so the links cannot carry another emission (hierarchical_solve keeps the emitters' shadow
+  // rays' E_d instead).
+  std::vector<Rgb> irradianceFrom(const std::vector<Rgb>&) override { return {}; }
   int iterations() const override { return iterations_; }
   std::string progressMeasure() const override { return "relative residual"; }
 

@@ -10,6 +10,8 @@
 #include "radiosity/hierarchical/hierarchical_radiosity.h"
 #include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/emitter_first_shot.h"
+#include "radiosity/pipeline/shadow_ray_direct_irradiance.h"
+#include "radiosity/pipeline/solver_results.h"
 
 namespace rad {
 using Clock = std::chrono::steady_clock;
@@ -66,6 +68,34 @@ void solveHierarchical(const SolveOptions& options, const RayCaster& rays,
   report.shooters = h.receivers;
 }
 
+namespace {
+
+// E_d for a hierarchical solve (Solution::directIrradiance): the lights' first shot plus the
+// emitters' direct light by the shadow rays of their first shot, the very D the links were solved
+// with when every emitter was shot; when the links carry some emitters (large ones), all of them
+// by a second estimate of the same kind (directIrradianceByShadowRays), which the solve does not
+// use. 0 on black elements.
+std::vector<Rgb> linksDirectIrradiance(const SolveSetup& setup, const EmitterFirstShot& shot,
+                                       const DirectLightStage& lights, const Solution& solution,
+                                       SolveReport& report) {
+  const std::vector<Rgb> own = ownEmission(solution, solution.problem, lights.irradiance());
+  const int emitting = static_cast<int>(
+      std::count_if(own.begin(), own.end(), [](const Rgb& e) { return e.maxComponent() > 0; }));
+  if (shot.emitters() != emitting)
+    return directIrradianceByShadowRays(solution, solution.problem, lights.irradiance(), setup.rays,
+                                        setup.exposure, setup.options, report.raysCast);
+  const int n = solution.mesh->elementCount();
+  std::vector<Rgb> direct = shot.active() ? shot.irradiance() : std::vector<Rgb>(n);
+  const std::vector<Rgb>& fromLights = lights.irradiance();
+  for (int e = 0; e < n; ++e) {
+    if (!fromLights.empty()) direct[e] += fromLights[e];
+    if (solution.problem.reflectance[e].maxComponent() <= 0) direct[e] = Rgb();
+  }
+  return direct;
+}
+
+}  // namespace
+
 void solveByLinks(const SolveSetup& setup, Solution& solution, SolveReport& report) {
   const SolveOptions& options = setup.options;
   DirectLightStage directLight(solution.scene, *solution.mesh, setup.rays, options,
@@ -85,6 +115,8 @@ void solveByLinks(const SolveSetup& setup, Solution& solution, SolveReport& repo
   t = Clock::now();
   solveHierarchical(options, setup.rays, setup.exposure, setup.limits, solution, report);
   emitterShot.restore(solution.problem, solution.radiosity);
+  solution.directIrradiance =
+      linksDirectIrradiance(setup, emitterShot, directLight, solution, report);
   directLight.report(report);
   report.times.solve = std::max(0.0, secondsSince(t) - report.times.formFactors);
   report.times.formFactors += emitterSeconds;

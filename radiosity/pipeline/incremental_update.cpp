@@ -21,6 +21,7 @@
 #include "radiosity/pipeline/kept_factors_stage.h"
 #include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/pipeline/resource_limits.h"
+#include "radiosity/pipeline/shadow_ray_direct_irradiance.h"
 #include "radiosity/pipeline/solve_stages.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/solvers/gathering_solvers.h"
@@ -330,7 +331,8 @@ void solveFromPrevious(const std::vector<Rgb>& previous, const std::vector<int>&
   auto* gathering = dynamic_cast<GatheringSolver*>(solver.get());
   RAD_CHECK(gathering != nullptr);
   gathering->startFrom(std::move(guess));
-  solveToLimits(*solver, limits, false, solution, report);  // gathering: no point values
+  solveToLimits(*solver, limits, false, keptLightsIrradiance(next), solution,
+                report);  // gathering: no point values
   next.rows.returnMatrix(gathering->releaseMatrix());
 }
 
@@ -432,6 +434,10 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   t = Clock::now();
   solveFromPrevious(previous, edit.match, options, *next,
                     iterationLimits(options, mesh.elementCount(), started.start), solution, report);
+  if (solution.directIrradiance.empty())  // rows through mirrors and glass
+    solution.directIrradiance =
+        directIrradianceByShadowRays(solution, solution.problem, keptLightsIrradiance(*next), rays,
+                                     exposure, options, report.raysCast);
   formFactors.report(report, options.solver);
   report.shooters = mesh.elementCount();
   report.times.solve = secondsSince(t);

@@ -6,6 +6,18 @@
 
 namespace rad {
 
+std::vector<Rgb> keptLightsIrradiance(const KeptFactors& kept, const std::vector<Rgb>& scale) {
+  RAD_CHECK(scale.empty() || scale.size() == kept.lightIrradiance.size());
+  std::vector<Rgb> sum;
+  for (size_t l = 0; l < kept.lightIrradiance.size(); ++l) {
+    const std::vector<Rgb>& light = kept.lightIrradiance[l];
+    sum.resize(light.size());
+    for (size_t e = 0; e < light.size(); ++e)
+      sum[e] += scale.empty() ? light[e] : scale[l] * light[e];
+  }
+  return sum;
+}
+
 std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster& rays,
                                              const SolveOptions& options,
                                              const ElementExposure& exposure, double elementEdge,

@@ -18,6 +18,10 @@ namespace rad {
 // Kept factors in a solve: what a solve keeps of itself (keepLightsApart), and what relight and
 // update solve over (KeptRows, withSolverOf). Their file is kept_factors.h.
 
+// The lights' first shot of a kept solve, all lights together: Σ_l scale_l E_d,l per element
+// (`scale`: one per light, relight's overrides; empty: 1 each). Empty when there are no lights.
+std::vector<Rgb> keptLightsIrradiance(const KeptFactors& kept, const std::vector<Rgb>& scale = {});
+
 // --keep-factors: each light's first shot on its own (no lamp sampling across lights, so relight
 // can scale each E_d), added to the emission; the rays per emitter row from each source's own
 // shares, without ρ (sourceRayMultipliers): relight changes neither. Returns the kept factors

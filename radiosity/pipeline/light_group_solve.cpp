@@ -8,6 +8,7 @@
 #include "radiosity/core/log.h"
 #include "radiosity/core/seconds_since.h"
 #include "radiosity/pipeline/problem_setup.h"
+#include "radiosity/pipeline/shadow_ray_direct_irradiance.h"
 #include "radiosity/pipeline/solver_results.h"
 #include "radiosity/solvers/solver_factory.h"
 
@@ -61,7 +62,8 @@ void solveLightGroups(std::vector<LightGroupProblem>& groups, FormFactorStage& f
   report.converged = true;
   report.stoppedBy = StopReason::Tolerance;
   bool anyShooting = false;
-  std::vector<Rgb> unshot(n);
+  std::vector<Rgb> unshot(n), direct(n);  // the groups' sums
+  bool separable = true;
   for (LightGroupProblem& g : groups) {
     logInfo("light group '" + g.group.name + "'");
     const std::unique_ptr<Solver> solver =
@@ -69,6 +71,11 @@ void solveLightGroups(std::vector<LightGroupProblem>& groups, FormFactorStage& f
                    [&] { return formFactors.gatheringMatrix(); });
     const StopReason stopped = iterate(*solver, limits);
     SolverResults results = readSolverResults(*solver, pointValues);
+    const std::vector<Rgb> groupDirect =
+        directIrradianceOf(*solver, solution, g.problem,
+                           g.directLight ? g.directLight->irradiance() : std::vector<Rgb>());
+    if (groupDirect.empty()) separable = false;  // rows through mirrors and glass
+    for (size_t e = 0; e < groupDirect.size(); ++e) direct[e] += groupDirect[e];
     LightLayer layer;
     layer.group = g.group;
     layer.radiosity = std::move(results.radiosity);
@@ -101,6 +108,7 @@ void solveLightGroups(std::vector<LightGroupProblem>& groups, FormFactorStage& f
       for (int k = 0; k < 3; ++k) solution.pointRadiosity[e][k] += layer.pointRadiosity[e][k];
   }
   if (anyShooting) solution.unshot = std::move(unshot);
+  if (separable) solution.directIrradiance = std::move(direct);
   uint64_t rays = 0;
   for (const LightGroupProblem& g : groups)
     if (g.directLight) rays += g.directLight->raysCast();
@@ -118,6 +126,15 @@ void solveByLightGroups(const SolveSetup& setup, Solution& solution, SolveReport
   throwIfInterrupted();
   const auto t = std::chrono::steady_clock::now();
   solveLightGroups(groups, formFactors, setup.options, setup.limits, solution, report);
+  if (solution.directIrradiance.empty()) {  // rows through mirrors and glass
+    std::vector<Rgb> lights(solution.mesh->elementCount());
+    for (const LightGroupProblem& g : groups)
+      if (g.directLight && !g.directLight->irradiance().empty())
+        for (size_t e = 0; e < lights.size(); ++e) lights[e] += g.directLight->irradiance()[e];
+    solution.directIrradiance =
+        directIrradianceByShadowRays(solution, solution.problem, lights, setup.rays, setup.exposure,
+                                     setup.options, report.raysCast);
+  }
   const double solveAndRows = secondsSince(t);
   formFactors.report(report, setup.options.solver);
   report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);

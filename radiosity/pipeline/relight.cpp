@@ -108,7 +108,7 @@ SolveResult finishRelight(RelightStart started, KeptFactors kept, const std::str
   const std::unique_ptr<Solver> solver =
       makeSolver(options.solver, solution.problem, rows, [&] { return kept.rows.takeMatrix(); });
   solveToLimits(*solver, iterationLimits(options, n, started.start), keepsPointValues(options),
-                solution, report);
+                keptLightsIrradiance(kept, lightScale), solution, report);
   report.shooters = n;
   report.relitFrom = keptPath;
   report.relitLightScale = lightScale;

@@ -9,6 +9,7 @@
 #include "radiosity/pipeline/direct_light_stage.h"
 #include "radiosity/pipeline/form_factor_stage.h"
 #include "radiosity/pipeline/refinement_stage.h"
+#include "radiosity/pipeline/shadow_ray_direct_irradiance.h"
 #include "radiosity/pipeline/solver_results.h"
 #include "radiosity/solvers/solver_factory.h"
 
@@ -61,7 +62,11 @@ std::shared_ptr<KeptFactors> solveByRows(const SolveSetup& setup, Solution& solu
   if (!kept) directLight.report(report);
   report.times.solve = std::max(0.0, solveAndRows - report.times.formFactors);
 
-  keepSolverResults(*solver, keepsPointValues(options), solution, report);
+  const std::vector<Rgb> lights = kept ? keptLightsIrradiance(*kept) : directLight.irradiance();
+  keepSolverResults(*solver, keepsPointValues(options), lights, solution, report);
+  if (solution.directIrradiance.empty())  // rows through mirrors and glass
+    solution.directIrradiance = directIrradianceByShadowRays(
+        solution, solution.problem, lights, setup.rays, setup.exposure, options, report.raysCast);
   directLight.addPointVariation(solution.problem, solution.pointRadiosity);
   return kept;
 }

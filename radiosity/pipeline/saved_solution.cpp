@@ -241,7 +241,8 @@ std::optional<SolveResult> loadSavedSolution(const std::string& dir, const Scene
     throw InputError(csvPath, lineNumber,
                      "the saved solution has " + std::to_string(element) +
                          " elements, the re-meshed scene " + std::to_string(count));
-  // E_d as the solve computed it, where the file keeps it (the Ed columns); left empty otherwise.
+  // E_d as the solve computed it, where the file keeps it (the Ed columns); left empty otherwise
+  // (solveOrReuse refuses such a solution where the split needs E_d).
   if (csv.hasDirectIrradiance) {
     result.solution.directIrradiance.resize(count);
     for (int e = 0; e < count; ++e) result.solution.directIrradiance[e] = rows[e].directIrradiance;

@@ -17,6 +17,13 @@ SolveResult solveOrReuse(Scene scene, const SolveOptions& options, const Solutio
   std::optional<SolveResult> saved;
   const std::string& dir = source.solutionDir.empty() ? source.reuseDir : source.solutionDir;
   if (!dir.empty()) saved = loadSavedSolution(dir, scene, options, whyNot);
+  if (saved && source.needsDirectIrradiance && saved->solution.directIrradiance.empty()) {
+    whyNot =
+        "its elements.csv has no E_d (the Ed_r,Ed_g,Ed_b columns), which --gather 0 "
+        "--light-rays takes the indirect light with: written before they were kept, or by a "
+        "relight of a scene with mirrors or glass";
+    saved.reset();
+  }
   if (!saved && !source.solutionDir.empty())
     throw InputError(source.solutionDir, 0, "no solution to reuse: " + whyNot);
   if (!saved) {

@@ -18,6 +18,11 @@ struct SolutionSource {
   // A directory whose matching solution is reused when there is one (render's --out); otherwise
   // the scene is solved. Empty: none.
   std::string reuseDir;
+  // The saved solution must keep each element's E_d (Solution::directIrradiance): the direct/
+  // indirect split (--gather 0 --light-rays N) takes its indirect part with it. One without (its
+  // elements.csv written before the Ed columns, or by a relight of a scene with mirrors or glass)
+  // is then not reused.
+  bool needsDirectIrradiance = false;
 };
 
 SolveResult solveOrReuse(Scene scene, const SolveOptions& options, const SolutionSource& source);

@@ -44,10 +44,11 @@ void noteBlackElements(const Solution& solution, SolveReport& report) {
 }
 
 void solveToLimits(Solver& solver, const IterationLimits& limits, bool pointValues,
-                   Solution& solution, SolveReport& report) {
+                   const std::vector<Rgb>& lightsIrradiance, Solution& solution,
+                   SolveReport& report) {
   report.stoppedBy = iterate(solver, limits);
   report.converged = converged(report.stoppedBy);
-  keepSolverResults(solver, pointValues, solution, report);
+  keepSolverResults(solver, pointValues, lightsIrradiance, solution, report);
 }
 
 }  // namespace rad

@@ -25,10 +25,12 @@ ElementSizing meshStage(Solution& solution, const SolveOptions& options, SolveRe
 // Notes the elements of reflectance 0 that are not mirrors or glass: they pass no light on.
 void noteBlackElements(const Solution& solution, SolveReport& report);
 
-// Steps the solver to its limits (iterate), then keeps what it reached (keepSolverResults): the
-// stopping state, B and the solver's fields into the solution and the report.
+// Steps the solver to its limits (iterate), then keeps what it reached (keepSolverResults, with
+// the lights' first shot `lightsIrradiance`): the stopping state, B, E_d and the solver's fields
+// into the solution and the report.
 void solveToLimits(Solver& solver, const IterationLimits& limits, bool pointValues,
-                   Solution& solution, SolveReport& report);
+                   const std::vector<Rgb>& lightsIrradiance, Solution& solution,
+                   SolveReport& report);
 
 // What each solve strategy (row solve, hierarchical, light groups) works with: solveScene
 // makes it once, after the mesh, the rays, the buried parts and the problem.

@@ -47,6 +47,18 @@ void GatheringSolver::startFrom(std::vector<Rgb> guess) {
   residual_ = relativeResidual(problem_, f_, solution_);
 }
 
+std::vector<Rgb> GatheringSolver::irradianceFrom(const std::vector<Rgb>& emission) {
+  RAD_CHECK_EQ(emission.size(), solution_.size());
+  RAD_CHECK_MSG(f_.rows() == problem_.size(), "the matrix was released");
+  std::vector<Rgb> irradiance(emission.size());
+  tbb::parallel_for(tbb::blocked_range<int>(0, problem_.size(), 256),
+                    [&](const tbb::blocked_range<int>& range) {
+                      for (int i = range.begin(); i != range.end(); ++i)
+                        irradiance[i] = gatherRow(f_, i, emission);
+                    });
+  return irradiance;
+}
+
 SparseRows GatheringSolver::releaseMatrix() {
   SparseRows f;
   f.swap(f_);

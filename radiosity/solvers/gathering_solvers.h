@@ -23,6 +23,8 @@ class GatheringSolver : public Solver {
   const std::vector<Rgb>& solution() const override { return solution_; }
   int iterations() const override { return iterations_; }
   std::string progressMeasure() const override { return "relative residual"; }
+  // F E by the rows (a black element's row is never computed: 0 there).
+  std::vector<Rgb> irradianceFrom(const std::vector<Rgb>& emission) override;
   // Iterates on from `guess` instead of B_0 = E (one B per element): `update` starts from the
   // solution before the edit, which is already right wherever the edit changed nothing.
   void startFrom(std::vector<Rgb> guess);

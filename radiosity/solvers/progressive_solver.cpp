@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/compensated_sum.h"
 
 namespace rad {
@@ -71,6 +72,23 @@ void ProgressiveSolver::step() {
   lastShooter_ = shooter;
   ++shotCount_;
   refreshSelection();
+}
+
+std::vector<Rgb> ProgressiveSolver::irradianceFrom(const std::vector<Rgb>& emission) {
+  RAD_CHECK_EQ(emission.size(), solution_.size());
+  std::vector<Rgb> power(shots_.shooterCount());
+  for (int i = 0; i < problem_.size(); ++i)
+    if (!emission[i].isZero()) power[shots_.shooterOf(i)] += emission[i] * problem_.area[i];
+  std::vector<Rgb> irradiance(emission.size());
+  for (int s = 0; s < static_cast<int>(power.size()); ++s) {
+    if (power[s].isZero()) continue;
+    const FormFactorRow& row = shots_.powerFractions(s);
+    for (size_t k = 0; k < row.targets.size(); ++k) {
+      const int j = row.targets[k];
+      irradiance[j] += power[s] * row.factor(k) / problem_.area[j];
+    }
+  }
+  return irradiance;
 }
 
 std::vector<Rgb> ProgressiveSolver::withAmbient() const {

@@ -33,6 +33,8 @@ class ProgressiveSolver : public RefinableSolver {
   const std::vector<std::array<Rgb, 3>>& pointSolution() const override { return pointSolution_; }
   int iterations() const override { return shotCount_; }
   std::string progressMeasure() const override { return "unshot power / emitted power"; }
+  // Each shooter's power Σ A E over its elements, spread by its row (computed if not yet shot).
+  std::vector<Rgb> irradianceFrom(const std::vector<Rgb>& emission) override;
 
   // B_i + rho_i · ambient, with ambient = R · (area-weighted mean unshot radiosity) and
   // R = 1 / (1 − area-weighted mean rho), per channel: an image that is roughly right from the

@@ -23,6 +23,13 @@ class Solver {
   virtual int iterations() const = 0;
   // What progress() measures, for logs and summary.json.
   virtual std::string progressMeasure() const = 0;
+  // The irradiance (W/m²) each element receives straight from `emission` (an exitance per
+  // element, W/m²) through this solver's own form factors: the gathering rows' Σ_j F_ij E_j, or
+  // the shooters' rows spread as one shot of their emission. So ρ × it is the part of solution()
+  // that came from `emission` in its first bounce, by the same estimator: its noise cancels in
+  // B − E − ρ × it. Empty where the solver's transport cannot be applied to another emission
+  // (hierarchical links, whose clusters show their own B).
+  virtual std::vector<Rgb> irradianceFrom(const std::vector<Rgb>& emission) = 0;
 };
 
 }  // namespace rad

@@ -1,7 +1,7 @@
 // Saved solutions (radiosity/pipeline/saved_solution.h): what writeSavedSolution keeps,
 // loadSavedSolution reads back for the same scene and solve options, bit-exact: B per element,
-// and E_d per element (Solution::directIrradiance) where the solution had it; a solution written
-// without E_d reads back without it.
+// and E_d per element (Solution::directIrradiance); a solution written without E_d reads back
+// without it, and solveOrReuse does not take it for the split.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,8 +16,10 @@
 
 #include "radiosity/core/atomic_file.h"
 #include "radiosity/core/check.h"
+#include "radiosity/core/errors.h"
 #include "radiosity/output/elements_csv.h"
 #include "radiosity/pipeline/saved_solution.h"
+#include "radiosity/pipeline/solution_source.h"
 #include "radiosity/pipeline/solve_pipeline.h"
 #include "radiosity/scene/scene_loader.h"
 
@@ -110,8 +112,9 @@ TEST(SavedSolution, DirectIrradianceReadsBackBitExact) {
   result.solution.directIrradiance.clear();
 }
 
-// E_d not known: no Ed columns, and the solution reads back without it.
-TEST(SavedSolution, WithoutDirectIrradianceReadsBackEmpty) {
+// E_d not known: no Ed columns; the solution reads back without it, and is not reused where the
+// split needs it.
+TEST(SavedSolution, WithoutDirectIrradianceReadsBackEmptyAndTheSplitDoesNotReuseIt) {
   SolveResult& result = solved();
   result.solution.directIrradiance.clear();
   const std::string dir = freshDir("no_ed");
@@ -120,6 +123,13 @@ TEST(SavedSolution, WithoutDirectIrradianceReadsBackEmpty) {
   const SolveResult loaded = load(dir);
   expectSameRadiosity(loaded.solution.radiosity, result.solution.radiosity);
   EXPECT_TRUE(loaded.solution.directIrradiance.empty());
+  SolutionSource split{dir, "", /*needsDirectIrradiance=*/true};
+  try {
+    solveOrReuse(loadScene(kCornell), smallSolve(), split);
+    ADD_FAILURE() << "reused a solution without E_d for the split";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Ed_r,Ed_g,Ed_b"), std::string::npos) << e.what();
+  }
   std::filesystem::remove_all(dir);
 }
 

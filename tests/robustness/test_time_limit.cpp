@@ -51,9 +51,10 @@ TEST(TimeLimit, WritesAValidSolutionFlaggedAsNotConverged) {
     std::vector<double> v;
     std::vector<std::string> f;
     for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
-    ASSERT_EQ(f.size(), 17u) << line;  // 16 numbers, then the buried cells (hexadecimal)
-    for (size_t k = 0; k < 16; ++k) v.push_back(std::stod(f[k]));
-    for (int k = 10; k < 16; ++k) ASSERT_TRUE(std::isfinite(v[k]) && v[k] >= 0) << line;
+    // 16 numbers, the 3 of E_d (Ed_r,Ed_g,Ed_b), then the buried cells (hexadecimal).
+    ASSERT_EQ(f.size(), 20u) << line;
+    for (size_t k = 0; k < 19; ++k) v.push_back(std::stod(f[k]));
+    for (int k = 10; k < 19; ++k) ASSERT_TRUE(std::isfinite(v[k]) && v[k] >= 0) << line;
     maxRed = std::max(maxRed, v[10]);
     ++rows;
   }
