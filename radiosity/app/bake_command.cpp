@@ -273,7 +273,9 @@ void runBake(const CLI::App& command, BakeOptions& o) {
   LightmapPlan plan;
   if (!o.noLightmap && o.solutionDir.empty()) plan = planLightmap(scene, o.solve, spec.layout);
   // A solution `solve` (or an earlier render) saved in --out is reused when it matches.
-  SolveResult result = solveOrReuse(std::move(scene), o.solve, {o.solutionDir, o.solve.outputDir});
+  SolveResult result =
+      solveOrReuse(std::move(scene), o.solve,
+                   {o.solutionDir, o.solve.outputDir, o.gather.indirectFromSolution()});
   result.report.times.load = loadSeconds;
   result.report.times.total += loadSeconds;
   const auto start = std::chrono::steady_clock::now();

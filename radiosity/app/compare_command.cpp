@@ -96,8 +96,8 @@ void runCompare(const CLI::App& command, CompareOptions& o) {
     throwIfInterrupted();
     const double solveBefore = world.solveSeconds();
     const RenderWorld::View view = world.viewFor(*method);
-    const auto integrator =
-        method->makeIntegrator(MethodInputs{*view.scene, view.radiosity, o.gather, &camera});
+    const auto integrator = method->makeIntegrator(
+        MethodInputs{*view.scene, view.radiosity, view.directIrradiance, o.gather, &camera});
     MethodResult r;
     r.method = method;
     r.spp = o.spp > 0 ? o.spp : method->defaultSpp;

@@ -337,7 +337,8 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   const ResolvedCamera resolved = resolveCamera(o.camera, o.solve.scenePath);
   const Camera& camera = resolved.camera;
   RenderWorld world(o.solve, resolved.file,
-                    {o.solutionDir, o.freshSolve ? std::string() : o.solve.outputDir});
+                    {o.solutionDir, o.freshSolve ? std::string() : o.solve.outputDir,
+                     o.gather.indirectFromSolution()});
   const ThreadLimit threadLimit(o.solve.threads);
 
   // The scene, its mesh and BVH, and (for methods that need it) the radiosity solution.
@@ -345,9 +346,9 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   const RenderScene& renderScene = *view.scene;
   SkipList skipped;
   noteSkippedWork(o, world, renderScene, camera, method.needsSolve, skipped);
-  const std::unique_ptr<Integrator> integrator =
-      method.makeIntegrator(MethodInputs{renderScene, view.radiosity, o.gather, &camera,
-                                         parseName(misHeuristicTable(), o.mis, "--mis")});
+  const std::unique_ptr<Integrator> integrator = method.makeIntegrator(
+      MethodInputs{renderScene, view.radiosity, view.directIrradiance, o.gather, &camera,
+                   parseName(misHeuristicTable(), o.mis, "--mis")});
   RenderSettings settings;
   settings.samplesPerPixel = o.spp > 0 ? o.spp : method.defaultSpp;
   settings.adaptive = o.adaptive;

@@ -46,7 +46,7 @@ RenderWorld::View RenderWorld::viewFor(const RenderMethod& method) {
     }
     if (!motionSpec_.empty())
       skip("motion blur for --method " + method.name, "only methods that sample time render it");
-    return {solvedView_.get(), &solved_->solution.radiosity};
+    return {solvedView_.get(), &solved_->solution.radiosity, &solved_->solution.directIrradiance};
   }
 
   if (!scene_) {

@@ -27,7 +27,8 @@ class RenderWorld {
 
   struct View {
     const RenderScene* scene = nullptr;
-    const std::vector<Rgb>* radiosity = nullptr;  // with the solve only
+    const std::vector<Rgb>* radiosity = nullptr;         // with the solve only
+    const std::vector<Rgb>* directIrradiance = nullptr;  // the solve's E_d, with `radiosity`
   };
   View viewFor(const RenderMethod& method);
 

@@ -17,7 +17,8 @@ LightmapPages::LightmapPages(const Solution& solution, const LightmapLayout& lay
   // gathered from the solution (final_gather.h) or its indirect part interpolated
   // (direct_indirect_split.h).
   if (spec.gather.castsRays()) {
-    gatherPass_ = makeRadiosityIntegrator(rays.view(), solution.radiosity, spec.gather);
+    gatherPass_ = makeRadiosityIntegrator(rays.view(), solution.radiosity,
+                                          solution.directIrradiance, spec.gather);
     gather_ = dynamic_cast<const TexelRadiance*>(gatherPass_.get());
     RAD_CHECK(gather_ != nullptr);
     gatherError_.assign(layout.pages,

@@ -1,27 +1,17 @@
 #include "radiosity/render/direct_indirect_split.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "radiosity/core/check.h"
 #include "radiosity/core/rng.h"
-#include "radiosity/core/stream_tags.h"
-#include "radiosity/pipeline/emitter_first_shot.h"
-#include "radiosity/pipeline/problem_setup.h"
 #include "radiosity/render/diffuse_eye_hit.h"
 #include "radiosity/render/element_solution.h"
 #include "radiosity/render/scene_lights.h"
 
 namespace rad {
 namespace {
-
-// Shadow rays per element for its mean direct light: the solve's own first shot takes half its
-// 1024 default links' rays (EmitterFirstShot::raysForSolve); the mean's noise enters the indirect
-// part, so about as many.
-constexpr int kMeanDirectRays = 512;
 
 // An interpolated indirect part may dip below 0 where noise put an element's below its direct
 // share; the light reflected at a point never does.
@@ -33,70 +23,30 @@ Rgb nonNegative(Rgb light) {
 }  // namespace
 
 DirectIndirectSplit::DirectIndirectSplit(const RenderScene& scene,
-                                         const std::vector<Rgb>& radiosity, int lightRays)
+                                         const std::vector<Rgb>& radiosity,
+                                         const std::vector<Rgb>& directIrradiance, int lightRays)
     // As many cosine rays as shadow rays, which only look for the lights.
     : scene_(scene),
       direct_(scene, lightRays, 1.0),
       exposure_(scene.mesh(), scene.caster()),
       interpolation_(scene.mesh(), exposedAreas(scene.mesh(), exposure_)) {
+  RAD_CHECK_MSG(directIrradiance.size() == radiosity.size(),
+                "the direct/indirect split needs the solve's E_d per element");
   const ElementSolution solution(scene, radiosity);
-  // The solution's reflected light less its direct part (the emitters' and the scene lights'
-  // means over the element, as the hits' shadow rays estimate them), per unit reflectance.
-  const std::vector<Rgb> direct = meanDirectLight(solution.rho);
-  std::vector<Rgb> perElement(direct.size());
-  for (size_t e = 0; e < direct.size(); ++e) {
+  // The solution's reflected light less its direct part, per unit reflectance: B − E − ρ E_d, the
+  // E_d the solve itself computed (Solution::directIrradiance), so the indirect part is the
+  // solver's own, its direct light's noise cancelled.
+  std::vector<Rgb> perElement(radiosity.size());
+  for (size_t e = 0; e < radiosity.size(); ++e) {
     const Rgb& rho = solution.rho[e];
-    // Not clamped at 0: where noise puts the solution's reflected light below its mean direct
-    // part, the hits' own direct light makes up for it on average over the element.
-    const Rgb indirect = solution.reflected[e] - rho * direct[e];
+    if (scene_.material(static_cast<int>(e)).isSpecular()) continue;
+    // Not clamped at 0: where rounding puts the reflected light below its direct part, the
+    // hits' own direct light makes up for it on average over the element.
+    const Rgb indirect = solution.reflected[e] - rho * (directIrradiance[e] / M_PI);
     for (int c = 0; c < 3; ++c)
       if (rho[c] > 0) perElement[e][c] = indirect[c] / rho[c];
   }
   vertexIndirect_ = interpolation_.interpolate(asVectors(perElement));
-}
-
-std::vector<Rgb> DirectIndirectSplit::meanDirectLight(const std::vector<Rgb>& rho) const {
-  const PatchMesh& mesh = scene_.mesh();
-  const int n = mesh.elementCount();
-  std::vector<Rgb> direct = meanSceneLight(rho);
-  // The emitters' by the solve's own estimator of their first shot (emitter_first_shot.h) on the
-  // solve's own problem (E and ρ as it shoots them, cut-outs too), every emitter shot, however
-  // large: bounded beside an emitter, where a shadow ray's E·cos·cos/r² has no bound.
-  RadiosityProblem problem = makeProblem(scene_.scene(), mesh, &exposure_);
-  EmitterFirstShot shot(mesh, scene_.caster(), exposure_, stream_tag::kSplitDirect, kMeanDirectRays,
-                        /*largeEmitterShare=*/1.0);
-  shot.apply(problem);
-  if (shot.active())
-    for (int e = 0; e < n; ++e) direct[e] += shot.irradiance()[e] / M_PI;
-  return direct;
-}
-
-std::vector<Rgb> DirectIndirectSplit::meanSceneLight(const std::vector<Rgb>& rho) const {
-  // Fewer points than the gather's element means: the sun and sky vary slowly over an element
-  // but for shadows, and a sky costs a ray per point per light.
-  constexpr int kPoints = 64;
-  const PatchMesh& mesh = scene_.mesh();
-  const int n = mesh.elementCount();
-  std::vector<Rgb> mean(n);
-  const SceneLights& lights = scene_.lights();
-  if (lights.empty()) return mean;
-  tbb::parallel_for(tbb::blocked_range<int>(0, n), [&](const tbb::blocked_range<int>& range) {
-    RayCounts unused;
-    for (int e = range.begin(); e < range.end(); ++e) {
-      if (scene_.material(e).isSpecular() || rho[e].maxComponent() == 0) continue;
-      Rgb sum;
-      const int exposed = forEachExposedPoint(
-          scene_, exposure_, e, kPoints, stream_tag::kLightMean, [&](const SurfaceHit& hit, int k) {
-            sum += lights.deltaIrradiance(scene_, hit, unused);
-            for (int a = 0; a < lights.areaCount(); ++a)
-              sum += lights.sampleArea(
-                  a, scene_, hit,
-                  SobolSampler::point(k, streamKey(stream_tag::kLightMean, e, 2 + a)), unused, 0.0);
-          });
-      mean[e] = exposed > 0 ? sum / (exposed * M_PI) : Rgb();
-    }
-  });
-  return mean;
 }
 
 std::string DirectIndirectSplit::name() const {

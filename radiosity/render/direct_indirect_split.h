@@ -21,8 +21,10 @@ namespace rad {
 // eye ray (DiffuseEyeHit).
 class DirectIndirectSplit : public Integrator, public TexelRadiance {
  public:
-  // `radiosity`: B per element (W/m²); emission E = π·Ke comes from the materials.
-  DirectIndirectSplit(const RenderScene& scene, const std::vector<Rgb>& radiosity, int lightRays);
+  // `radiosity`: B per element (W/m²); emission E = π·Ke comes from the materials;
+  // `directIrradiance`: E_d per element as the solve computed it (Solution::directIrradiance).
+  DirectIndirectSplit(const RenderScene& scene, const std::vector<Rgb>& radiosity,
+                      const std::vector<Rgb>& directIrradiance, int lightRays);
 
   Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
                RayCounts& counts) const override;
@@ -40,11 +42,6 @@ class DirectIndirectSplit : public Integrator, public TexelRadiance {
   // The solution's indirect incident light H_i/π at barycentrics (u, v) of `element`, from
   // vertexIndirect_.
   Rgb interpolatedIndirect(int element, double u, double v) const;
-  // Per element: the mean over its exposed points of the direct irradiance / π, from the
-  // emitters and the scene lights; the latter's part alone (sun, sky, lamps). Elements of no
-  // reflectance `rho` (and mirrors, glass) are left at 0.
-  std::vector<Rgb> meanDirectLight(const std::vector<Rgb>& rho) const;
-  std::vector<Rgb> meanSceneLight(const std::vector<Rgb>& rho) const;
   // The mean over the cosine rays of what they find of the lights straight ahead (lightAlong).
   Rgb lightsAlong(const SurfaceHit& hit, Sampler& sampler, RayCounts& counts,
                   Rgb* variance = nullptr, const TexelFootprint* footprint = nullptr) const;

@@ -8,10 +8,12 @@ namespace rad {
 
 std::unique_ptr<Integrator> makeRadiosityIntegrator(const RenderScene& scene,
                                                     const std::vector<Rgb>& radiosity,
+                                                    const std::vector<Rgb>& directIrradiance,
                                                     FinalGatherOptions options) {
   if (options.gatherRays > 0) return std::make_unique<FinalGather>(scene, radiosity, options);
   if (options.indirectFromSolution())
-    return std::make_unique<DirectIndirectSplit>(scene, radiosity, options.lightRays);
+    return std::make_unique<DirectIndirectSplit>(scene, radiosity, directIrradiance,
+                                                 options.lightRays);
   return std::make_unique<InterpolatedPreview>(scene, radiosity);
 }
 

@@ -35,7 +35,7 @@ const std::vector<RenderMethod>& renderMethods() {
       {"radiosity", "L(D|S)*E", "radiosity solution (LD*) with final gather and specular chains",
        true, false, 16,
        [](const MethodInputs& in) {
-         return makeRadiosityIntegrator(in.scene, *in.radiosity, in.gather);
+         return makeRadiosityIntegrator(in.scene, *in.radiosity, *in.directIrradiance, in.gather);
        }},
   };
   return methods;

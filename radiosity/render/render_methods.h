@@ -23,6 +23,8 @@ constexpr int kRenderGather = 1;
 struct MethodInputs {
   const RenderScene& scene;
   const std::vector<Rgb>* radiosity = nullptr;  // B per element, for methods that need the solve
+  // E_d per element as the solve computed it, with `radiosity` (the split's indirect part).
+  const std::vector<Rgb>* directIrradiance = nullptr;
   // The rays per diffuse eye hit of the pass over the solution (radiosity:
   // makeRadiosityIntegrator).
   FinalGatherOptions gather = {kRenderGather, 0};

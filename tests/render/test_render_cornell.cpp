@@ -52,8 +52,11 @@ void expectAgreesWithPathTracer(const FinalGatherOptions& options, int spp, doub
   camera.width = camera.height = 64;
 
   const PairedRender path = renderPair(camera, PathTracer(*s->view), 128, 11);
-  const PairedRender gather = renderPair(
-      camera, *makeRadiosityIntegrator(*s->view, s->solved.solution.radiosity, options), spp, 12);
+  const PairedRender gather =
+      renderPair(camera,
+                 *makeRadiosityIntegrator(*s->view, s->solved.solution.radiosity,
+                                          s->solved.solution.directIrradiance, options),
+                 spp, 12);
 
   double diff2 = 0, ref2 = 0, noise2 = 0;
   Rgb meanPath, meanGather, varMeanPath, varMeanGather;

@@ -109,7 +109,8 @@ TEST(RenderFurnace, FinalGatherWithFewerShadowRaysStaysUnbiased) {
 TEST(RenderFurnace, DirectLightWithTheSolutionsIndirectPartSeesKeOverOneMinusRho) {
   auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
                                    furnaceSolve());
-  const DirectIndirectSplit hybrid(*s->view, s->solved.solution.radiosity, 4);
+  const DirectIndirectSplit hybrid(*s->view, s->solved.solution.radiosity,
+                                   s->solved.solution.directIrradiance, 4);
   RenderSettings settings;
   settings.samplesPerPixel = 64;
   settings.showProgress = false;
@@ -128,7 +129,8 @@ TEST(RenderFurnace, DirectLightWithTheSolutionsIndirectPartSeesKeOverOneMinusRho
 TEST(RenderFurnace, TexelsOfTheDirectLightWithTheSolutionsIndirectPartSeeKeOverOneMinusRho) {
   auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
                                    furnaceSolve());
-  const DirectIndirectSplit hybrid(*s->view, s->solved.solution.radiosity, 64);
+  const DirectIndirectSplit hybrid(*s->view, s->solved.solution.radiosity,
+                                   s->solved.solution.directIrradiance, 64);
   const int n = s->view->mesh().elementCount();
   double mean = 0;
   for (int e = 0; e < n; ++e) {
@@ -160,15 +162,16 @@ TEST(RenderFurnace, TheRayCountsChooseThePassOverTheSolution) {
   auto s = testing::solveForRender(std::string(RADIOSITY_DATA_DIR) + "/tests/furnace_box.obj",
                                    furnaceSolve());
   const std::vector<Rgb>& b = s->solved.solution.radiosity;
-  const auto gather = makeRadiosityIntegrator(*s->view, b, {4, 2});
+  const std::vector<Rgb>& ed = s->solved.solution.directIrradiance;
+  const auto gather = makeRadiosityIntegrator(*s->view, b, ed, {4, 2});
   EXPECT_NE(dynamic_cast<const FinalGather*>(gather.get()), nullptr);
   EXPECT_NE(dynamic_cast<const TexelRadiance*>(gather.get()), nullptr);
   EXPECT_EQ(gather->name(), "radiosity (final gather, 4 rays)");
-  const auto split = makeRadiosityIntegrator(*s->view, b, {0, 3});
+  const auto split = makeRadiosityIntegrator(*s->view, b, ed, {0, 3});
   EXPECT_NE(dynamic_cast<const DirectIndirectSplit*>(split.get()), nullptr);
   EXPECT_NE(dynamic_cast<const TexelRadiance*>(split.get()), nullptr);
   EXPECT_EQ(split->name(), "radiosity (direct by 3 shadow rays, indirect from the solution)");
-  const auto preview = makeRadiosityIntegrator(*s->view, b, {0, 0});
+  const auto preview = makeRadiosityIntegrator(*s->view, b, ed, {0, 0});
   EXPECT_NE(dynamic_cast<const InterpolatedPreview*>(preview.get()), nullptr);
   EXPECT_EQ(dynamic_cast<const TexelRadiance*>(preview.get()), nullptr);
   EXPECT_EQ(preview->name(), "radiosity (interpolated, no gather)");

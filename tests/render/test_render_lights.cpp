@@ -430,8 +430,9 @@ TEST(RenderLights, PathTracerBdptAndFinalGatherAgreeOnALitBox) {
   const Estimate preview = meanOver(InterpolatedPreview(*w->view, w->solved.solution.radiosity), 2);
   // The direct light at the hit, the solution's indirect part interpolated: the sun, sky and lamp
   // each counted once (their mean share taken out of the solution's B).
-  const Estimate hybrid =
-      meanOver(DirectIndirectSplit(*w->view, w->solved.solution.radiosity, 4), 64);
+  const Estimate hybrid = meanOver(DirectIndirectSplit(*w->view, w->solved.solution.radiosity,
+                                                       w->solved.solution.directIrradiance, 4),
+                                   64);
   for (int c = 0; c < 3; ++c) {
     const double noise = std::hypot(path.sigma[c], bdpt.sigma[c]);
     ASSERT_GT(noise, 0);

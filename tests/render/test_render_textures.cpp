@@ -151,7 +151,7 @@ TEST(TexturedRender, InterpolatedRadiosityViewShowsTheTexelsInsideElements) {
   const Solution& s = result.solution;
   const RayCaster caster(*s.mesh);
   const RenderScene view(s.scene, *s.mesh, caster);
-  const DirectIndirectSplit preview(view, s.radiosity, 16);
+  const DirectIndirectSplit preview(view, s.radiosity, s.directIrradiance, 16);
   Rng rng(1);
   RayCounts counts;
   // Straight down onto points of the floor: on an open plane under the sky every point
