@@ -13,7 +13,12 @@ namespace rad {
 // a red or blue lamp's light to few samples (the staircase's split at 16 spp: 14% more error).
 // The solve's emitter first shot (pipeline/emitter_first_shot) and the renders' emitter samples
 // (render/emitter_sampler) both pick by it.
-inline double emitterPower(double area, const Rgb& emission) { return area * emission.sum(); }
+// Per unit area (the power of a unit of the emitter's area): what a density over the emitters'
+// area is proportional to.
+inline double emitterPowerPerArea(const Rgb& emission) { return emission.sum(); }
+inline double emitterPower(double area, const Rgb& emission) {
+  return area * emitterPowerPerArea(emission);
+}
 
 // A choice among n items in proportion to their weights (powers), by one number u in [0, 1):
 // bright, large emitters get the samples. The items keep the order they are given in, so a

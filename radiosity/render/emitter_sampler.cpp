@@ -20,7 +20,7 @@ EmitterSampler::EmitterSampler(const Scene& scene, const PatchMesh& mesh)
   }
   power_ = PowerDistribution(powers);
   for (const int e : elements_)
-    pdfArea_[e] = radiance_[e].sum() / power_.total();  // (A·Ke/total) · (1/A)
+    pdfArea_[e] = emitterPowerPerArea(radiance_[e]) / power_.total();  // (A·Ke/total) · (1/A)
 }
 
 EmitterSample EmitterSampler::sample(double u, double v) const {
