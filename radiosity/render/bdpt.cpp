@@ -1,6 +1,10 @@
 #include "radiosity/render/bdpt.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <string_view>
 
 #include "radiosity/render/scattering.h"
 
@@ -125,6 +129,174 @@ double Bdpt::misWeight(const std::vector<Vertex>& light, const std::vector<Verte
   return 1 / (1 + sum);
 }
 
+class Bdpt::Tally {
+ public:
+  Tally(const PathBinning* binning, Rgb* binned, const std::vector<Vertex>& eye,
+        const std::vector<Vertex>& light)
+      : binning_(binning), binned_(binned) {
+    if (!binning_) return;
+    eyeLabels_.clear();
+    for (size_t i = 1; i < eye.size(); ++i) eyeLabels_.push_back(eye[i].label);
+    lightLabels_.clear();
+    for (size_t i = 1; i < light.size(); ++i) lightLabels_.push_back(light[i].label);
+  }
+
+  // Strategy (s, t)'s contribution `c` to this camera sample's pixel.
+  void add(const Rgb& c, int s, int t) {
+    sum_ += c;
+    if (!binning_) return;
+    // The light-side vertices y1…y_{s−1}, then z_{t−1}…z1 (for s = 0, z_{t−1} itself is L).
+    const std::string_view lightSide = std::string_view(lightLabels_).substr(0, s > 0 ? s - 1 : 0);
+    const std::string_view eyeSide = std::string_view(eyeLabels_).substr(0, s > 0 ? t - 1 : t - 2);
+    lightToEyeLabel(label_, lightSide, eyeSide);
+    const int bin = binning_->binOf(label_);
+    if (bin >= 0) binned_[bin] += c;
+  }
+
+  // The bin of the light-traced path y0…y_{s−1}E (t = 1); −1 without binning.
+  int lightTracingBin(int s) {
+    if (!binning_) return -1;
+    lightToEyeLabel(label_, std::string_view(lightLabels_).substr(0, s - 1), {});
+    return binning_->binOf(label_);
+  }
+
+  const Rgb& sum() const { return sum_; }
+
+ private:
+  const PathBinning* binning_;
+  Rgb* binned_;
+  Rgb sum_;
+  // Kept from sample to sample, so that labelling does not allocate once they have grown.
+  static thread_local std::string eyeLabels_, lightLabels_, label_;
+};
+
+thread_local std::string Bdpt::Tally::eyeLabels_, Bdpt::Tally::lightLabels_, Bdpt::Tally::label_;
+
+void Bdpt::traceEyePath(std::vector<Vertex>& eye, const Eigen::Vector3d& origin,
+                        const Eigen::Vector3d& direction, Rng& rng, RayCounts& counts,
+                        Escape& escape) const {
+  // z0 is the camera (its densities never enter the weights: t ≥ 1 always).
+  eye.clear();
+  Vertex camera;
+  camera.hit.position = origin;
+  camera.hit.normal = direction;  // unused: the camera is never a connection end
+  camera.label = 'E';
+  eye.push_back(camera);
+  walk(eye, origin, direction, Rgb::all(1.0), cameraPdf(direction), false, rng, counts, &escape);
+}
+
+void Bdpt::traceLightPath(std::vector<Vertex>& light, Rng& rng, RayCounts& counts) const {
+  // y0 is a point on an emitter; the emission is cosine-distributed.
+  light.clear();
+  const EmitterSampler& lights = scene_.emitters();
+  if (lights.empty()) return;
+  const EmitterSample e = lights.sample(rng.uniform(), rng.uniform(), rng.uniform());
+  Vertex y0;
+  y0.hit.element = e.element;
+  y0.hit.position = e.position;
+  y0.hit.normal = e.normal;
+  y0.hit.front = true;
+  y0.hit.material = &scene_.material(e.element);
+  y0.hit.diffuse = y0.hit.material->diffuse;  // never scattered: y0 only emits
+  y0.beta = e.radiance / e.pdfArea;
+  y0.pdfFwd = e.pdfArea;
+  y0.label = 'L';
+  light.push_back(y0);
+  const Eigen::Vector3d d = cosineDirection(e.normal, rng.uniform(), rng.uniform());
+  const double pdfDir = e.normal.dot(d) / M_PI;
+  if (pdfDir > 0)  // Le·cos / (pdfArea · cos/π)
+    walk(light, scene_.spawn(y0.hit, d), d, y0.beta * M_PI, pdfDir, true, rng, counts);
+}
+
+void Bdpt::connectEyeVertex(const std::vector<Vertex>& light, const std::vector<Vertex>& eye, int t,
+                            bool lightTracing, Rng& rng, RayCounts& counts, Tally& tally) const {
+  const Vertex& z = eye[t - 1];
+  if (z.specular) return;
+  const Material& mz = *z.hit.material;
+
+  // s = 0: the eye sub-path reached an emitter's front.
+  if (mz.isEmitter()) {
+    const double w =
+        misWeight(light, eye, 0, t, 0, scene_.emitters().pdfArea(z.hit.element), lightTracing);
+    tally.add(z.beta * mz.emission * w, 0, t);
+  }
+  if (z.hit.diffuse.maxComponent() == 0) return;
+
+  // The point, spot, directional and sky lights at z_{t−1}: labelled as a connection (s = 1).
+  const SceneLights& sceneLights = scene_.lights();
+  if (!sceneLights.empty()) {
+    RandomSampler lightsSampler(rng);
+    tally.add(z.beta * z.hit.diffuse *
+                  (sceneLights.sampleIrradiance(scene_, z.hit, lightsSampler, counts, 1) / M_PI),
+              1, t);
+  }
+
+  // s ≥ 1: connect y_{s−1} and z_{t−1} by a shadow ray.
+  const int lightCount = static_cast<int>(light.size());
+  for (int s = 1; s <= lightCount; ++s)
+    if (const std::optional<Rgb> c = connect(light, eye, s, t, lightTracing, counts))
+      tally.add(*c, s, t);
+}
+
+std::optional<Rgb> Bdpt::connect(const std::vector<Vertex>& light, const std::vector<Vertex>& eye,
+                                 int s, int t, bool lightTracing, RayCounts& counts) const {
+  const Vertex& y = light[s - 1];
+  const Vertex& z = eye[t - 1];
+  if (y.specular || y.hit.element == z.hit.element) return std::nullopt;
+  const Rgb fy = s == 1 ? Rgb::all(1.0) : y.hit.diffuse / M_PI;  // Le is in y0.beta
+  if (fy.maxComponent() == 0) return std::nullopt;
+  Eigen::Vector3d w = y.hit.position - z.hit.position;
+  const double d2 = w.squaredNorm();
+  w /= std::sqrt(d2);
+  const double cosZ = z.hit.normal.dot(w), cosY = -y.hit.normal.dot(w);
+  if (cosZ <= 0 || cosY <= 0) return std::nullopt;  // one-sided surfaces and emitters
+  ++counts.shadow;
+  if (scene_.occluded(scene_.spawn(z.hit, w), y.hit.position)) return std::nullopt;
+  // Either end reached from the other by a cosine-distributed direction: cos·cos/(π d²).
+  const double pdfAcross = cosY * cosZ / (M_PI * d2);
+  const double weight = misWeight(light, eye, s, t, pdfAcross, pdfAcross, lightTracing);
+  return y.beta * fy * (z.hit.diffuse / M_PI) * z.beta * (cosY * cosZ / d2 * weight);
+}
+
+Rgb Bdpt::escapedRadiance(const Escape& escape, const Eigen::Vector3d& normal) const {
+  const SceneLights& sceneLights = scene_.lights();
+  return escape.beta * (escape.afterDelta
+                            ? sceneLights.escapedRadiance(escape.direction)
+                            : sceneLights.escapedRadiance(escape.direction, normal, 1));
+}
+
+// Per camera sample the value is beta·f·cos_y/(A cos³θ d²); the renderer divides by the samples
+// per pixel.
+void Bdpt::splatToCamera(const std::vector<Vertex>& light, const std::vector<Vertex>& eye,
+                         RayCounts& counts, Tally& tally, SplatImage& splats) const {
+  const double sx = tanHalfX_, sy = tanHalfY_;
+  const int lightCount = static_cast<int>(light.size());
+  for (int s = 1; s <= lightCount; ++s) {
+    const Vertex& y = light[s - 1];
+    if (y.specular) continue;
+    const Rgb fy = s == 1 ? Rgb::all(1.0) : y.hit.diffuse / M_PI;
+    if (fy.maxComponent() == 0) continue;
+    Eigen::Vector3d w = camera_.position - y.hit.position;  // towards the camera
+    const double d2 = w.squaredNorm();
+    w /= std::sqrt(d2);
+    const double cosY = y.hit.normal.dot(w);
+    const double pdfDir = cameraPdf(-w);
+    if (cosY <= 0 || pdfDir == 0) continue;
+    const Eigen::Vector3d v = -w;
+    const double f = v.dot(rays_.forward());
+    const double px = (v.dot(rays_.right()) / f / sx + 1) * 0.5 * camera_.width;
+    const double py = (1 - v.dot(rays_.up()) / f / sy) * 0.5 * camera_.height;
+    if (!(px >= 0 && px < camera_.width && py >= 0 && py < camera_.height)) continue;
+    ++counts.shadow;
+    if (scene_.occluded(scene_.spawn(y.hit, w), camera_.position)) continue;
+    const double pdfFromCamera = pdfDir * cosY / d2;  // area density of y from the camera
+    const double weight = misWeight(light, eye, s, 1, pdfFromCamera, 0, true);
+    const Rgb c = y.beta * fy * (pdfDir * cosY / d2 * weight);
+    splats.add(std::min(static_cast<int>(px), camera_.width - 1),
+               std::min(static_cast<int>(py), camera_.height - 1), c, tally.lightTracingBin(s));
+  }
+}
+
 Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
                 RayCounts& counts, const PathBinning* binning, Rgb* binned,
                 SplatImage* splats) const {
@@ -132,152 +304,25 @@ Rgb Bdpt::trace(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
   // connections, not stratification, are what lowers bdpt's variance.
   Rng& rng = sampler.rng();
   thread_local std::vector<Vertex> eye, light;
-  thread_local std::string eyeLabels, lightLabels, label;
-  const EmitterSampler& lights = scene_.emitters();
   const SceneLights& sceneLights = scene_.lights();
-  Rgb result;
-  if (lights.empty() && sceneLights.empty()) return result;
+  if (scene_.emitters().empty() && sceneLights.empty()) return Rgb();
 
   // Light tracing needs a pinhole: a lens point would be one more sampled vertex.
   const bool lightTracing = splats != nullptr && camera_.lensRadius == 0;
-
-  // Eye sub-path: z0 is the camera (its densities never enter the weights: t ≥ 1 always).
-  eye.clear();
-  Vertex camera;
-  camera.hit.position = origin;
-  camera.hit.normal = direction;  // unused: the camera is never a connection end
-  camera.label = 'E';
-  eye.push_back(camera);
   Escape escape;
-  walk(eye, origin, direction, Rgb::all(1.0), cameraPdf(direction), false, rng, counts, &escape);
+  traceEyePath(eye, origin, direction, rng, counts, escape);
+  traceLightPath(light, rng, counts);
 
-  // Light sub-path: y0 is a point on an emitter; the emission is cosine-distributed. None
-  // without emissive polygons.
-  light.clear();
-  if (!lights.empty()) {
-    const EmitterSample e = lights.sample(rng.uniform(), rng.uniform(), rng.uniform());
-    Vertex y0;
-    y0.hit.element = e.element;
-    y0.hit.position = e.position;
-    y0.hit.normal = e.normal;
-    y0.hit.front = true;
-    y0.hit.material = &scene_.material(e.element);
-    y0.hit.diffuse = y0.hit.material->diffuse;  // never scattered: y0 only emits
-    y0.beta = e.radiance / e.pdfArea;
-    y0.pdfFwd = e.pdfArea;
-    y0.label = 'L';
-    light.push_back(y0);
-    {
-      const Eigen::Vector3d d = cosineDirection(e.normal, rng.uniform(), rng.uniform());
-      const double pdfDir = e.normal.dot(d) / M_PI;
-      if (pdfDir > 0)  // Le·cos / (pdfArea · cos/π)
-        walk(light, scene_.spawn(y0.hit, d), d, y0.beta * M_PI, pdfDir, true, rng, counts);
-    }
-  }
-
-  if (binning) {
-    eyeLabels.clear();
-    for (size_t i = 1; i < eye.size(); ++i) eyeLabels.push_back(eye[i].label);
-    lightLabels.clear();
-    for (size_t i = 1; i < light.size(); ++i) lightLabels.push_back(light[i].label);
-  }
-  auto add = [&](const Rgb& c, int s, int t) {
-    result += c;
-    if (!binning) return;
-    // The light-side vertices y1…y_{s−1}, then z_{t−1}…z1 (for s = 0, z_{t−1} itself is L).
-    const std::string_view lightSide = std::string_view(lightLabels).substr(0, s > 0 ? s - 1 : 0);
-    const std::string_view eyeSide = std::string_view(eyeLabels).substr(0, s > 0 ? t - 1 : t - 2);
-    lightToEyeLabel(label, lightSide, eyeSide);
-    const int bin = binning->binOf(label);
-    if (bin >= 0) binned[bin] += c;
-  };
-
-  const int eyeCount = static_cast<int>(eye.size()), lightCount = static_cast<int>(light.size());
-  for (int t = 2; t <= eyeCount; ++t) {
-    const Vertex& z = eye[t - 1];
-    if (z.specular) continue;
-    const Material& mz = *z.hit.material;
-
-    // s = 0: the eye sub-path reached an emitter's front.
-    if (mz.isEmitter()) {
-      const double w =
-          misWeight(light, eye, 0, t, 0, scene_.emitters().pdfArea(z.hit.element), lightTracing);
-      add(z.beta * mz.emission * w, 0, t);
-    }
-    if (z.hit.diffuse.maxComponent() == 0) continue;
-
-    // The point, spot, directional and sky lights at z_{t−1}: labelled as a connection (s = 1).
-    if (!sceneLights.empty()) {
-      RandomSampler lightsSampler(rng);
-      add(z.beta * z.hit.diffuse *
-              (sceneLights.sampleIrradiance(scene_, z.hit, lightsSampler, counts, 1) / M_PI),
-          1, t);
-    }
-
-    // s ≥ 1: connect y_{s−1} and z_{t−1} by a shadow ray.
-    for (int s = 1; s <= lightCount; ++s) {
-      const Vertex& y = light[s - 1];
-      if (y.specular || y.hit.element == z.hit.element) continue;
-      const Rgb fy = s == 1 ? Rgb::all(1.0) : y.hit.diffuse / M_PI;  // Le is in y0.beta
-      if (fy.maxComponent() == 0) continue;
-      Eigen::Vector3d w = y.hit.position - z.hit.position;
-      const double d2 = w.squaredNorm();
-      w /= std::sqrt(d2);
-      const double cosZ = z.hit.normal.dot(w), cosY = -y.hit.normal.dot(w);
-      if (cosZ <= 0 || cosY <= 0) continue;  // one-sided surfaces and emitters
-      ++counts.shadow;
-      if (scene_.occluded(scene_.spawn(z.hit, w), y.hit.position)) continue;
-      // Either end reached from the other by a cosine-distributed direction: cos·cos/(π d²).
-      const double pdfAcross = cosY * cosZ / (M_PI * d2);
-      const double weight = misWeight(light, eye, s, t, pdfAcross, pdfAcross, lightTracing);
-      add(y.beta * fy * (z.hit.diffuse / M_PI) * z.beta * (cosY * cosZ / d2 * weight), s, t);
-    }
-  }
-
+  Tally tally(binning, binned, eye, light);
+  const int eyeCount = static_cast<int>(eye.size());
+  for (int t = 2; t <= eyeCount; ++t)
+    connectEyeVertex(light, eye, t, lightTracing, rng, counts, tally);
   // The eye sub-path left the scene: the sky and the sun's disc, as if at one more eye vertex.
-  if (escape.escaped && !sceneLights.empty()) {
-    const Eigen::Vector3d& normal = eye.back().hit.normal;
-    add(escape.beta * (escape.afterDelta
-                           ? sceneLights.escapedRadiance(escape.direction)
-                           : sceneLights.escapedRadiance(escape.direction, normal, 1)),
-        0, eyeCount + 1);
-  }
-
-  // t = 1: connect y_{s−1} to the camera and splat to the pixel it projects to. Per camera sample
-  // the value is beta·f·cos_y/(A cos³θ d²); the renderer divides by the samples per pixel.
-  if (lightTracing) {
-    const double sx = tanHalfX_, sy = tanHalfY_;
-    for (int s = 1; s <= lightCount; ++s) {
-      const Vertex& y = light[s - 1];
-      if (y.specular) continue;
-      const Rgb fy = s == 1 ? Rgb::all(1.0) : y.hit.diffuse / M_PI;
-      if (fy.maxComponent() == 0) continue;
-      Eigen::Vector3d w = camera_.position - y.hit.position;  // towards the camera
-      const double d2 = w.squaredNorm();
-      w /= std::sqrt(d2);
-      const double cosY = y.hit.normal.dot(w);
-      const double pdfDir = cameraPdf(-w);
-      if (cosY <= 0 || pdfDir == 0) continue;
-      const Eigen::Vector3d v = -w;
-      const double f = v.dot(rays_.forward());
-      const double px = (v.dot(rays_.right()) / f / sx + 1) * 0.5 * camera_.width;
-      const double py = (1 - v.dot(rays_.up()) / f / sy) * 0.5 * camera_.height;
-      if (!(px >= 0 && px < camera_.width && py >= 0 && py < camera_.height)) continue;
-      ++counts.shadow;
-      if (scene_.occluded(scene_.spawn(y.hit, w), camera_.position)) continue;
-      const double pdfFromCamera = pdfDir * cosY / d2;  // area density of y from the camera
-      const double weight = misWeight(light, eye, s, 1, pdfFromCamera, 0, true);
-      const Rgb c = y.beta * fy * (pdfDir * cosY / d2 * weight);
-      int bin = -1;
-      if (binning) {
-        lightToEyeLabel(label, std::string_view(lightLabels).substr(0, s - 1), {});
-        bin = binning->binOf(label);
-      }
-      splats->add(std::min(static_cast<int>(px), camera_.width - 1),
-                  std::min(static_cast<int>(py), camera_.height - 1), c, bin);
-    }
-  }
-  return result;
+  if (escape.escaped && !sceneLights.empty())
+    tally.add(escapedRadiance(escape, eye.back().hit.normal), 0, eyeCount + 1);
+  // t = 1: connect each light vertex to the camera, splatted to the pixel it projects to.
+  if (lightTracing) splatToCamera(light, eye, counts, tally, *splats);
+  return tally.sum();
 }
 
 }  // namespace rad

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,28 @@ class Bdpt : public PathIntegrator {
             Escape* escape = nullptr) const;
   double misWeight(const std::vector<Vertex>& light, const std::vector<Vertex>& eye, int s, int t,
                    double lightEndRev, double eyeEndRev, bool lightTracing) const;
+  // A camera sample's sum of contributions, each also binned by its full path's Heckbert label
+  // (defined in bdpt.cpp).
+  class Tally;
+  // z0 (the camera) z1 …: the eye sub-path along the camera ray.
+  void traceEyePath(std::vector<Vertex>& eye, const Eigen::Vector3d& origin,
+                    const Eigen::Vector3d& direction, Rng& rng, RayCounts& counts,
+                    Escape& escape) const;
+  // y0 (a point on an emitter) y1 …: the light sub-path; empty without emissive polygons.
+  void traceLightPath(std::vector<Vertex>& light, Rng& rng, RayCounts& counts) const;
+  // Every strategy that ends at the eye vertex z_{t−1} (t ≥ 2): s = 0, the scene lights, s ≥ 1.
+  void connectEyeVertex(const std::vector<Vertex>& light, const std::vector<Vertex>& eye, int t,
+                        bool lightTracing, Rng& rng, RayCounts& counts, Tally& tally) const;
+  // Strategy (s ≥ 1, t ≥ 2): y_{s−1} and z_{t−1} joined by a shadow ray; none where they cannot
+  // be joined or the ray is blocked.
+  std::optional<Rgb> connect(const std::vector<Vertex>& light, const std::vector<Vertex>& eye,
+                             int s, int t, bool lightTracing, RayCounts& counts) const;
+  // The sky and the sun's disc along the ray the eye sub-path left the scene by; `normal`: the
+  // last eye vertex's.
+  Rgb escapedRadiance(const Escape& escape, const Eigen::Vector3d& normal) const;
+  // t = 1 (light tracing): every light vertex joined to the camera and splatted to its pixel.
+  void splatToCamera(const std::vector<Vertex>& light, const std::vector<Vertex>& eye,
+                     RayCounts& counts, Tally& tally, SplatImage& splats) const;
   // Solid-angle density, per camera sample over the whole image, of the camera ray along the
   // unit `direction` (1/(A cos³θ), A the image plane's area at distance 1); 0 outside the view.
   double cameraPdf(const Eigen::Vector3d& direction) const;
