@@ -327,6 +327,29 @@ void noteSkippedWork(const RenderCommandOptions& o, const RenderWorld& world,
     skipped.add("light tracing (t = 1)", "it needs a pinhole camera (lens radius 0)");
 }
 
+RenderSettings renderSettings(const RenderCommandOptions& o, const RenderMethod& method) {
+  RenderSettings settings;
+  settings.samplesPerPixel = o.spp > 0 ? o.spp : method.defaultSpp;
+  settings.adaptive = o.adaptive;
+  settings.seed = o.solve.seed;
+  return settings;
+}
+
+// The solution, for the next render into `dir` (not when it was reused from there, nor when it
+// cannot be reused): its two files, owned by `owned`, listed in `files` to take their names with
+// the render's.
+void keepSolutionForNextRender(const RenderCommandOptions& o, const RenderWorld& world,
+                               const std::filesystem::path& dir,
+                               std::vector<std::unique_ptr<AtomicFile>>& owned,
+                               std::vector<AtomicFile*>& files) {
+  if (world.reusedSolution() || !solutionIsReusable(o.solve)) return;
+  owned.push_back(std::make_unique<AtomicFile>((dir / kSolutionCsv).string()));
+  owned.push_back(std::make_unique<AtomicFile>((dir / kSolutionJson).string()));
+  writeSavedSolution(*owned[0], *owned[1], *world.solved(), o.solve);
+  files.push_back(owned[0].get());
+  files.push_back(owned[1].get());
+}
+
 void runRender(const CLI::App& command, RenderCommandOptions& o) {
   const auto start = Clock::now();
   const RenderMethod& method = findRenderMethod(o.method);
@@ -349,10 +372,7 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   const std::unique_ptr<Integrator> integrator = method.makeIntegrator(
       MethodInputs{renderScene, view.radiosity, view.directIrradiance, o.gather, &camera,
                    parseName(misHeuristicTable(), o.mis, "--mis")});
-  RenderSettings settings;
-  settings.samplesPerPixel = o.spp > 0 ? o.spp : method.defaultSpp;
-  settings.adaptive = o.adaptive;
-  settings.seed = o.solve.seed;
+  const RenderSettings settings = renderSettings(o, method);
   const RenderedImages images = renderImages(o, world, renderScene, *integrator, camera, settings,
                                              pathFilter, method.needsSolve, skipped);
   const RenderOutput& render = images.render;
@@ -387,16 +407,9 @@ void runRender(const CLI::App& command, RenderCommandOptions& o) {
   AtomicFile json((dir / "render.json").string());
   json.stream() << renderReport(o, facts, world, bounceNames, skipped).dump(2) << "\n";
 
-  // The solution, for the next render into this directory (not when it was reused from here).
   std::vector<AtomicFile*> files = {&json};
-  std::unique_ptr<AtomicFile> solutionCsv, solutionJson;
-  if (method.needsSolve && !world.reusedSolution() && solutionIsReusable(o.solve)) {
-    solutionCsv = std::make_unique<AtomicFile>((dir / kSolutionCsv).string());
-    solutionJson = std::make_unique<AtomicFile>((dir / kSolutionJson).string());
-    writeSavedSolution(*solutionCsv, *solutionJson, *world.solved(), o.solve);
-    files.push_back(solutionCsv.get());
-    files.push_back(solutionJson.get());
-  }
+  std::vector<std::unique_ptr<AtomicFile>> solutionFiles;
+  if (method.needsSolve) keepSolutionForNextRender(o, world, dir, solutionFiles, files);
   for (AtomicFile* f : files) f->finish();
   for (auto& file : imageFiles) file->commit();
   commitAll(files);
