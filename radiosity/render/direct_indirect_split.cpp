@@ -83,12 +83,6 @@ Rgb DirectIndirectSplit::lightAlong(const SurfaceHit& from, const Eigen::Vector3
 }
 
 Rgb DirectIndirectSplit::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                                  Rng& rng, RayCounts& counts) const {
-  RandomSampler sampler(rng);
-  return radiance(origin, direction, sampler, counts);
-}
-
-Rgb DirectIndirectSplit::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                                   Sampler& sampler, RayCounts& counts) const {
   const DiffuseEyeHit eye = traceToDiffuse(scene_, origin, direction, sampler, counts);
   if (!eye.reached) return eye.radiance;

@@ -19,15 +19,14 @@ namespace rad {
 // interpolated: no gather ray, so no gather noise; the indirect part's discretisation is the bias,
 // small where the indirect light varies slowly (docs/rendering.md). Mirrors and glass continue the
 // eye ray (DiffuseEyeHit).
-class DirectIndirectSplit : public Integrator, public TexelRadiance {
+class DirectIndirectSplit : public SamplerIntegrator, public TexelRadiance {
  public:
   // `radiosity`: B per element (W/m²); emission E = π·Ke comes from the materials;
   // `directIrradiance`: E_d per element as the solve computed it (Solution::directIrradiance).
   DirectIndirectSplit(const RenderScene& scene, const std::vector<Rgb>& radiosity,
                       const std::vector<Rgb>& directIrradiance, int lightRays);
 
-  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
-               RayCounts& counts) const override;
+  using SamplerIntegrator::radiance;
   // Shadow-ray points and cosine directions come from `sampler` (stratified across the pixel).
   Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
                RayCounts& counts) const override;

@@ -174,12 +174,6 @@ Rgb FinalGather::outgoingRadiance(int element, const TexelFootprint& footprint, 
   return m.emission + hit.diffuse * (direct + gathered);
 }
 
-Rgb FinalGather::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
-                          RayCounts& counts) const {
-  RandomSampler sampler(rng);
-  return radiance(origin, direction, sampler, counts);
-}
-
 Rgb FinalGather::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                           Sampler& sampler, RayCounts& counts) const {
   const DiffuseEyeHit eye = traceToDiffuse(scene_, origin, direction, sampler, counts);

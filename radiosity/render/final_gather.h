@@ -17,15 +17,14 @@ namespace rad {
 // (DirectLightEstimator) plus N cosine-weighted gather rays into the solution's reflected part
 // (B − E)/π, the two sharing the direct light by MIS (FinalGatherOptions). Mirrors and glass
 // continue the eye ray (DiffuseEyeHit), so they show the radiosity world, emitters included.
-class FinalGather : public Integrator, public TexelRadiance {
+class FinalGather : public SamplerIntegrator, public TexelRadiance {
  public:
   // `radiosity`: B per element (W/m²); emission E = π·Ke comes from the materials.
   // `options.gatherRays` > 0.
   FinalGather(const RenderScene& scene, const std::vector<Rgb>& radiosity,
               FinalGatherOptions options);
 
-  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
-               RayCounts& counts) const override;
+  using SamplerIntegrator::radiance;
   // Shadow-ray points and gather directions come from `sampler` (stratified across the pixel).
   Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
                RayCounts& counts) const override;

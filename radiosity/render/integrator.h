@@ -28,4 +28,17 @@ class Integrator {
   virtual std::string name() const = 0;
 };
 
+// An integrator that draws every random number from a Sampler: its estimate from an Rng is the
+// same estimate with the sampler's dimensions drawn from that Rng (RandomSampler).
+class SamplerIntegrator : public Integrator {
+ public:
+  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
+               RayCounts& counts) const final {
+    RandomSampler sampler(rng);
+    return radiance(origin, direction, sampler, counts);
+  }
+  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
+               RayCounts& counts) const override = 0;
+};
+
 }  // namespace rad

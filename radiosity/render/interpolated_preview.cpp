@@ -24,12 +24,6 @@ InterpolatedPreview::InterpolatedPreview(const RenderScene& scene,
 }
 
 Rgb InterpolatedPreview::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
-                                  Rng& rng, RayCounts& counts) const {
-  RandomSampler sampler(rng);
-  return radiance(origin, direction, sampler, counts);
-}
-
-Rgb InterpolatedPreview::radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                                   Sampler& sampler, RayCounts& counts) const {
   const DiffuseEyeHit eye = traceToDiffuse(scene_, origin, direction, sampler, counts);
   if (!eye.reached) return eye.radiance;

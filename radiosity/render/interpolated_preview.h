@@ -14,13 +14,12 @@ namespace rad {
 // elements weighed by their exposed areas). Mirrors and glass continue the ray (DiffuseEyeHit), so
 // they show the radiosity world, emitters included. Linear in B: the bounce terms' previews sum
 // to the solution's.
-class InterpolatedPreview : public Integrator {
+class InterpolatedPreview : public SamplerIntegrator {
  public:
   // `radiosity`: B per element (W/m²); emission E = π·Ke comes from the materials.
   InterpolatedPreview(const RenderScene& scene, const std::vector<Rgb>& radiosity);
 
-  Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Rng& rng,
-               RayCounts& counts) const override;
+  using SamplerIntegrator::radiance;
   // The glass's Fresnel choices come from `sampler`.
   Rgb radiance(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, Sampler& sampler,
                RayCounts& counts) const override;
