@@ -60,20 +60,20 @@ void runUpdate(const UpdateOptions& o) {
   UpdateStart started = startUpdate(header, keptPath, solver);
   const KeptFactors kept = reading.get();
   const ElementsCsv previousCsv = readingPrevious.get();
-  std::vector<Rgb> previous;
-  std::vector<uint64_t> previousBuried;  // empty in a file written before it kept them
+  PreviousSolution previous;
   for (const ElementsCsvRow& row : previousCsv.rows) {
-    previous.push_back(row.radiosity);
-    if (previousCsv.hasBuriedCells) previousBuried.push_back(row.buriedCells);
+    previous.radiosity.push_back(row.radiosity);
+    if (previousCsv.hasDirectIrradiance) previous.directIrradiance.push_back(row.directIrradiance);
+    if (previousCsv.hasBuriedCells) previous.buriedCells.push_back(row.buriedCells);
   }
-  if (previous.size() != kept.area.size())
+  if (previous.radiosity.size() != kept.area.size())
     throw InputError(csvPath, 0,
-                     std::to_string(previous.size()) + " elements, the kept factors beside it " +
+                     std::to_string(previous.radiosity.size()) +
+                         " elements, the kept factors beside it " +
                          std::to_string(kept.area.size()) + ": not the same solve");
   logInfo("read " + keptPath + " (" + std::to_string(kept.rows.size()) + " rows), " + csvPath +
           " and the scene, meshed, in " + formatNumber(secondsSince(t)) + " s");
-  SolveResult result = finishUpdate(std::move(started), kept, keptPath, previous,
-                                    previousCsv.hasBuriedCells ? &previousBuried : nullptr);
+  SolveResult result = finishUpdate(std::move(started), kept, keptPath, previous);
   throwIfInterrupted();
   SolveOptions written = updatedSolutionOptions(kept, result);
   written.outputDir = solver.outputDir;

@@ -250,8 +250,24 @@ void HemisphereFormFactors::frontHits(int element, const RayBlock& b, int* targe
       if (n[0] * b.direction[0][i] + n[1] * b.direction[1][i] + n[2] * b.direction[2][i] < 0)
         front = t;
     }
+    if (front >= 0 && options_.exposure != nullptr && options_.exposure->buriedCells(front) != 0) {
+      const float origin[3] = {b.castOrigin[0][i], b.castOrigin[1][i], b.castOrigin[2][i]};
+      const float direction[3] = {b.direction[0][i], b.direction[1][i], b.direction[2][i]};
+      if (landsBuried(options_.exposure, front, origin, direction, b.distance[i])) front = -1;
+    }
     target[i] = front;
   }
+}
+
+bool HemisphereFormFactors::landsBuried(const ElementExposure* exposure, int target,
+                                        const float origin[3], const float direction[3],
+                                        float distance) const {
+  if (exposure == nullptr || exposure->buriedCells(target) == 0) return false;
+  Eigen::Vector3d hit = rays_.centre();
+  for (int d = 0; d < 3; ++d)
+    hit[d] += static_cast<double>(origin[d]) +
+              static_cast<double>(distance) * static_cast<double>(direction[d]);
+  return exposure->buriedAtPoint(mesh_, target, hit);
 }
 
 namespace {
@@ -431,16 +447,21 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<double(in
     const float* md[3] = {d[0], d[1], d[2]};
     rays_.closestHits(m, mo, md, hit, hitDistance);
     edit.oldPlace.distances(m, mo, md, oldDistance, oldTriangle);
-    auto front = [&](int t, int i) {  // frontHits' rule: only a front face receives
+    // frontHits' rule: only a front face receives, and only outside its buried cells (as they
+    // are now for the new hit, as the kept row was cast with for the old one).
+    auto front = [&](int t, int i, float distance, const ElementExposure* exposure) {
       if (t < 0 || t == element) return -1;
       const float* n = &frontNormals_[3 * static_cast<size_t>(t)];
-      return n[0] * d[0][i] + n[1] * d[1][i] + n[2] * d[2][i] < 0 ? t : -1;
+      if (!(n[0] * d[0][i] + n[1] * d[1][i] + n[2] * d[2][i] < 0)) return -1;
+      const float origin[3] = {o[0][i], o[1][i], o[2][i]};
+      const float direction[3] = {d[0][i], d[1][i], d[2][i]};
+      return landsBuried(exposure, t, origin, direction, distance) ? -1 : t;
     };
     for (int i = 0; i < m; ++i) {
       // "No farther", with a margin for the rounding of the two traversals: the region's new
       // triangles are the scene's own, hit at the same distance.
       if (!(meetDistance[i] <= hitDistance[i] * (1 + 1e-5f))) continue;
-      const int newTarget = front(hit[i], i);
+      const int newTarget = front(hit[i], i, hitDistance[i], options_.exposure);
       // The first hit on what did not move: the same ray in the scene without the moved elements
       // (not continued past them, which would skip a face where a moved one lies on it, the floor
       // under a crate).
@@ -453,7 +474,8 @@ bool HemisphereFormFactors::updateRow(int element, const std::function<double(in
       }
       // Its old hit: on the old place, an entry left out of the kept row, or escaped (-1) when
       // it met a back face there; else what it hits past the moved elements.
-      int oldTarget = front(fixedHit, i);
+      int oldTarget = front(fixedHit, i, fixedDistance,
+                            edit.cellsBefore ? edit.cellsBefore : options_.exposure);
       if (oldDistance[i] < fixedDistance) {
         const float direction[3] = {d[0][i], d[1][i], d[2][i]};
         oldTarget = edit.oldPlace.meetsFront(oldTriangle[i], direction) ? kRemoved : -1;
@@ -543,7 +565,9 @@ FormFactorRow HemisphereFormFactors::computeRow(int element) const {
       if (options_.exposure != nullptr &&
           options_.exposure->buried(element, b.u[2][i], b.u[3][i])) {
         firstHit[k] = kBuriedOrigin;
-      } else if (end.element >= 0 && end.element != element) {
+      } else if (end.element >= 0 && end.element != element &&
+                 !(options_.exposure != nullptr &&
+                   options_.exposure->buriedAtPoint(mesh_, end.element, end.point))) {
         firstHit[k] = end.element;
         weight[k] = end.weight;
       }

@@ -66,6 +66,10 @@ class HemisphereFormFactors {
     const TriangleSetCaster& oldPlace;
     const std::vector<char>& moved;
     const RayCaster& withoutMoved;  // the scene without the moved elements, in the same frame
+    // The buried cells the kept rows were cast with, per element now (a ray landing in one was
+    // lost), or nullptr where they are the exposure's now. The region must hold every element
+    // whose cells changed, so that the rays reaching it are examined.
+    const ElementExposure* cellsBefore = nullptr;
   };
   // Brings element's row from before the edit up to date ray by ray, casting only the rays that
   // meet the edit's region no farther than their first hit in the scene: `changes` says how its
@@ -142,6 +146,13 @@ class HemisphereFormFactors {
   // kBuriedOrigin for a ray that left a buried part of the element (not counted in the row).
   static constexpr int kBuriedOrigin = -2;
   void frontHits(int element, const RayBlock& block, int* target) const;
+  // Whether a ray cast from `origin` (the caster's frame, the floats as cast) along `direction`,
+  // whose first hit at `distance` is the front of element `target`, lands in a buried cell of
+  // it. No light reaches there (the ray slipped through the crack where a box meets the floor,
+  // and the element's values are per exposed area), so such a ray is lost like one meeting a
+  // back face. Only targets with buried cells cost more than a look-up.
+  bool landsBuried(const ElementExposure* exposure, int target, const float origin[3],
+                   const float direction[3], float distance) const;
   // Rows from each ray's first hit (-1: escaped): plain counts, or with each path's tint.
   FormFactorRow assemble(const std::vector<int>& firstHit) const;
   FormFactorRow assembleTinted(const std::vector<int>& firstHit,

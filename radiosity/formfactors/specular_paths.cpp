@@ -24,6 +24,7 @@ SpecularPathEnd traceThroughSpecular(const RayCaster& rays,
     if (surface.kind == SpecularSurface::Kind::Diffuse) {
       if (cosine >= 0) return {};  // back faces absorb
       end.element = j;
+      end.point = origin + hit.distance * direction;
       return end;
     }
     if (end.specularBounces >= kSpecularBounceLimit) return {};

@@ -26,6 +26,7 @@ struct SpecularSurface {
 // never above 1: survivesRouletteWithinOne).
 struct SpecularPathEnd {
   int element = -1;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // where it reached `element`
   Rgb weight = Rgb::all(1);
   int specularBounces = 0;
 };

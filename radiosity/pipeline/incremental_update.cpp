@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <numeric>
 #include <unordered_map>
 
@@ -139,12 +140,13 @@ ElementExposure exposureTheEditLeaves(const SolveOptions& options, const PatchMe
 
 // The kept solve and the previous solution belong together, and the scene stops rays as it did.
 void checkKeptSolveFits(const KeptFactors& kept, const std::string& keptPath,
-                        const std::vector<Rgb>& previous,
-                        const std::vector<uint64_t>* previousBuriedCells, const Scene& scene) {
-  if (previous.size() != kept.area.size() ||
-      (previousBuriedCells && previousBuriedCells->size() != kept.area.size()))
+                        const PreviousSolution& previous, const Scene& scene) {
+  const size_t n = kept.area.size();
+  if (previous.radiosity.size() != n ||
+      (!previous.buriedCells.empty() && previous.buriedCells.size() != n) ||
+      (!previous.directIrradiance.empty() && previous.directIrradiance.size() != n))
     throw InputError(keptPath, 0,
-                     "the previous solution has " + std::to_string(previous.size()) +
+                     "the previous solution has " + std::to_string(previous.radiosity.size()) +
                          " elements, the kept factors " + std::to_string(kept.area.size()) +
                          ": not the same solve");
   if (kept.lightIrradiance.size() != scene.lights.size())
@@ -315,6 +317,62 @@ KeptRowTable updateKeptRows(const KeptFactors& kept, const EditRegion& edit,
                       tried.changes);
 }
 
+// The buried cells the kept rows were cast with, per element now (the kept solve's, as the previous
+// elements.csv holds them), and the elements that stayed put with other cells now: a row counts a
+// ray landing in a buried cell of its target as lost, so the rays reaching those elements are
+// examined as rays meeting the edit are. Without the kept cells, the cells now stand for them.
+struct CellsBefore {
+  std::unique_ptr<ElementExposure> exposure;  // null: as now
+  std::vector<std::array<Eigen::Vector3d, 3>> changed;
+};
+
+CellsBefore buriedCellsBefore(const PatchMesh& mesh, const std::vector<int>& match,
+                              const ElementExposure& now, const std::vector<uint64_t>& previous) {
+  CellsBefore before;
+  if (previous.empty()) return before;
+  std::vector<uint64_t> cells(static_cast<size_t>(mesh.elementCount()));
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const int old = match[static_cast<size_t>(e)];
+    cells[static_cast<size_t>(e)] =
+        old >= 0 ? previous[static_cast<size_t>(old)] : now.buriedCells(e);
+    if (cells[static_cast<size_t>(e)] != now.buriedCells(e))
+      before.changed.push_back(mesh.corners(e));
+  }
+  before.exposure = std::make_unique<ElementExposure>(mesh, std::move(cells));
+  return before;
+}
+
+// Whether the update found nothing that the solution depends on changed: no element moved, was
+// added or removed, every row and every light's E_d was kept, and the materials are as solved.
+bool editChangedNothing(const KeptFactors& kept, const EditRegion& edit, const Solution& solution,
+                        const SolveReport::Update& update) {
+  const int n = solution.mesh->elementCount();
+  return edit.region.empty() && update.rowsReused == n &&
+         update.directLightKept ==
+             static_cast<int64_t>(n) * static_cast<int64_t>(solution.scene.lights.size()) &&
+         !kept.materialsFingerprint.empty() &&
+         kept.materialsFingerprint == keptMaterialsFingerprint(solution.scene);
+}
+
+// The previous solution as it is, B and E_d, when the edit changed nothing: the kept solve's
+// answer, which a gathering solve from it would move by the difference between its solver's
+// estimate and the kept solver's (a progressive solve's rows are used the other way round).
+void keepPreviousSolution(const KeptFactors& kept, const PreviousSolution& previous,
+                          const std::vector<int>& match, Solution& solution, SolveReport& report) {
+  const size_t n = match.size();
+  solution.radiosity.resize(n);
+  solution.directIrradiance.resize(n);
+  for (size_t e = 0; e < n; ++e) {
+    solution.radiosity[e] = previous.radiosity[static_cast<size_t>(match[e])];
+    solution.directIrradiance[e] = previous.directIrradiance[static_cast<size_t>(match[e])];
+  }
+  report.stoppedBy = StopReason::Tolerance;
+  report.converged = true;
+  report.iterations = 0;
+  report.solverName = solverKindName(kept.options.solver);  // whose answer it is
+  report.skip("solving again", "the update found no edit: the kept solution stands");
+}
+
 // Gauss–Seidel or Jacobi from the previous solution (new elements from their emission):
 // unchanged where the edit changed nothing.
 void solveFromPrevious(const std::vector<Rgb>& previous, const std::vector<int>& match,
@@ -339,10 +397,8 @@ void solveFromPrevious(const std::vector<Rgb>& previous, const std::vector<int>&
 }  // namespace
 
 SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
-                            const std::vector<Rgb>& previous, const SolveOptions& solverOptions,
-                            const std::vector<uint64_t>* previousBuriedCells) {
-  return finishUpdate(startUpdate(kept, keptPath, solverOptions), kept, keptPath, previous,
-                      previousBuriedCells);
+                            const PreviousSolution& previous, const SolveOptions& solverOptions) {
+  return finishUpdate(startUpdate(kept, keptPath, solverOptions), kept, keptPath, previous);
 }
 
 UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
@@ -390,10 +446,9 @@ UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
 }
 
 SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std::string& keptPath,
-                         const std::vector<Rgb>& previous,
-                         const std::vector<uint64_t>* previousBuriedCells) {
+                         const PreviousSolution& previous) {
   const SolveOptions& options = started.options;
-  checkKeptSolveFits(kept, keptPath, previous, previousBuriedCells, started.result.solution.scene);
+  checkKeptSolveFits(kept, keptPath, previous, started.result.solution.scene);
   SolveResult result = std::move(started.result);
   Solution& solution = result.solution;
   SolveReport& report = result.report;
@@ -408,10 +463,12 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   report.times.bvh = secondsSince(t);
   const TriangleSetCaster regionCaster(edit.region, rays.centre(), mesh.boundsDiagonal()),
       oldCaster(edit.oldPlace, rays.centre(), mesh.boundsDiagonal());
-  solution.exposure = std::make_shared<const ElementExposure>(exposureTheEditLeaves(
-      options, mesh, rays, edit.match, previousBuriedCells, regionCaster, update.buriedCellsKept));
+  solution.exposure = std::make_shared<const ElementExposure>(
+      exposureTheEditLeaves(options, mesh, rays, edit.match,
+                            previous.buriedCells.empty() ? nullptr : &previous.buriedCells,
+                            regionCaster, update.buriedCellsKept));
   const ElementExposure& exposure = *solution.exposure;  // for elements.csv, as a solve keeps it
-  noteProbeRays(exposure, previousBuriedCells != nullptr, mesh.elementCount(), report);
+  noteProbeRays(exposure, !previous.buriedCells.empty(), mesh.elementCount(), report);
   solution.problem = makeProblem(solution.scene, mesh, &exposure);
   // The lights' first shot: an element that stayed put, with the same exposed area, whose shadow
   // rays to a light cannot meet the edit keeps the E_d the kept solve computed.
@@ -426,14 +483,25 @@ SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std
   FormFactorStage formFactors(solution.scene, mesh, rays, solution.problem, options, &exposure,
                               rayMultipliers);
   const RayCaster withoutMoved(mesh, solution.scene, edit.moved);
-  next->rows = updateKeptRows(kept, edit, {regionCaster, oldCaster, edit.moved, withoutMoved},
-                              rayMultipliers, solution.problem, formFactors, update);
+  const CellsBefore cellsBefore =
+      buriedCellsBefore(mesh, edit.match, exposure, previous.buriedCells);
+  std::vector<std::array<Eigen::Vector3d, 3>> rowRegion = edit.region;
+  rowRegion.insert(rowRegion.end(), cellsBefore.changed.begin(), cellsBefore.changed.end());
+  const TriangleSetCaster rowRegionCaster(rowRegion, rays.centre(), mesh.boundsDiagonal());
+  next->rows = updateKeptRows(
+      kept, edit,
+      {rowRegionCaster, oldCaster, edit.moved, withoutMoved, cellsBefore.exposure.get()},
+      rayMultipliers, solution.problem, formFactors, update);
   next->fingerprint = keptFactorsFingerprint(solution.scene, options);
   next->options = options;
 
   t = Clock::now();
-  solveFromPrevious(previous, edit.match, options, *next,
-                    iterationLimits(options, mesh.elementCount(), started.start), solution, report);
+  if (!previous.directIrradiance.empty() && editChangedNothing(kept, edit, solution, update))
+    keepPreviousSolution(kept, previous, edit.match, solution, report);
+  else
+    solveFromPrevious(previous.radiosity, edit.match, options, *next,
+                      iterationLimits(options, mesh.elementCount(), started.start), solution,
+                      report);
   if (solution.directIrradiance.empty())  // rows through mirrors and glass
     solution.directIrradiance =
         directIrradianceByShadowRays(solution, solution.problem, keptLightsIrradiance(*next), rays,

@@ -24,19 +24,28 @@ namespace rad {
 // its row's ray budget are unchanged; every other row is cast again. An element that stayed put
 // with the same exposed area keeps its direct light from a light (sun, sky, lamp) where none of
 // its shadow rays to it can meet the region's bounds (edit_reach.h); the others' is cast again.
-// An element that stayed put keeps its buried cells (`previousBuriedCells`, per kept element, as
-// the previous elements.csv holds them) where none of its probe rays can meet the region's bounds;
-// the others are probed again, and all of them without `previousBuriedCells`. The solve is a
+// An element that stayed put keeps its buried cells (`previous.buriedCells`, as the previous
+// elements.csv holds them) where none of its probe rays can meet the region's bounds; the others
+// are probed again, and all of them without them. The solve is a
 // gathering solver's (Gauss–Seidel by default; Jacobi), starting from the previous solution
-// (`previous`, B per kept element; new elements start from their emission). Returns the solution
+// (`previous.radiosity`; new elements start from their emission). Returns the solution
 // with its kept factors, to be written back for the next update or relight; what the edit changed
 // and what was reused are in the report (SolveReport::update).
 //
 // InputError naming `keptPath`: a scene with mirrors or glass (their rows continue past the first
 // hit), a progressive or Southwell solver, `previous` not one value per kept element.
+//
+// An update that finds nothing changed (no element moved, added or removed, every row and every
+// light's E_d kept, the materials as solved) returns the previous solution as it is, B and E_d,
+// without solving: the kept solve's answer, whichever solver made it.
+struct PreviousSolution {
+  std::vector<Rgb> radiosity;  // B per kept element (elements.csv)
+  std::vector<Rgb>
+      directIrradiance;  // E_d per kept element; empty in a file without the Ed columns
+  std::vector<uint64_t> buriedCells;  // per kept element; empty in a file without them
+};
 SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
-                            const std::vector<Rgb>& previous, const SolveOptions& solverOptions,
-                            const std::vector<uint64_t>* previousBuriedCells = nullptr);
+                            const PreviousSolution& previous, const SolveOptions& solverOptions);
 
 // updateKeptSolve in two steps, so that the first runs while factors.bin is still being read:
 // from the kept header alone (readKeptFactors with KeptParts::Header), the scene loaded, checked
@@ -50,8 +59,7 @@ struct UpdateStart {
 UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
                         const SolveOptions& solverOptions);
 SolveResult finishUpdate(UpdateStart started, const KeptFactors& kept, const std::string& keptPath,
-                         const std::vector<Rgb>& previous,
-                         const std::vector<uint64_t>* previousBuriedCells = nullptr);
+                         const PreviousSolution& previous);
 
 // The options the updated solution is saved under (solution.json, so `bake --solution DIR` reuses
 // it): the kept solve's own, with the update's solver and tolerance, when its element-size rule

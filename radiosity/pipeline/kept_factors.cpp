@@ -287,6 +287,7 @@ void writeKeptFactors(std::ostream& stream, const KeptFactors& kept) {
       {"element_edge", kept.elementEdge},
       {"light_input", lightInputJson(kept.lightInput)},
       {"lights_fingerprint", kept.lightsFingerprint},
+      {"materials_fingerprint", kept.materialsFingerprint},
       {"material_visibility",
        kept.materialVisibility}}.dump();
   out.bytes(kMagic, std::strlen(kMagic));
@@ -360,6 +361,7 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
     kept.elementEdge = header.at("element_edge").get<double>();
     kept.lightInput = lightInputFromJson(header.at("light_input"), reader);
     kept.lightsFingerprint = header.value("lights_fingerprint", std::string());
+    kept.materialsFingerprint = header.value("materials_fingerprint", std::string());
     kept.materialVisibility =
         header.value("material_visibility", std::map<std::string, std::string>());
   } catch (const nlohmann::json::exception& e) {
@@ -446,6 +448,25 @@ KeptFactors readKeptFactors(const std::string& path, KeptParts parts) {
   if (reader.left() != 0)
     reader.fail(std::to_string(reader.left()) + " bytes after the mesh: not one kept solve");
   return kept;
+}
+
+std::string keptMaterialsFingerprint(const Scene& scene) {
+  Fingerprint f;
+  f.add(scene.materials.size());
+  for (const Material& m : scene.materials) {
+    f.add(m.name);
+    f.add(m.diffuse);
+    f.add(m.emission);
+    f.add(m.diffuseTexture);
+    f.add(m.emissionTexture);
+  }
+  f.add(scene.textures.size());
+  for (const Texture& t : scene.textures) {
+    f.add(t.width);
+    f.add(t.height);
+    for (float v : t.rgba) f.add(v);
+  }
+  return f.hex();
 }
 
 std::string keptLightsFingerprint(const std::vector<Light>& lights) {

@@ -38,6 +38,10 @@ struct KeptFactors {
   // update refuses a material turned two-sided or given a cut-out, which changes rows without
   // moving geometry. Empty in files kept before it was recorded.
   std::map<std::string, std::string> materialVisibility;
+  // A hash of what the materials give ρ and E from (keptMaterialsFingerprint): an update that
+  // finds no edit returns the kept solution only when these are as solved. Empty in files kept
+  // before it was recorded.
+  std::string materialsFingerprint;
   KeptRowTable rows;  // per element: its hemisphere row
 
   // For `update` after a geometry edit (incremental.h): what the mesh was, to tell which elements
@@ -60,13 +64,16 @@ std::string keptFactorsFingerprint(const Scene& scene, const SolveOptions& optio
 // Per material name, a hash of its kind, specular values, two-sidedness and cut-out mask: what
 // decides which rays it stops or bends (KeptFactors::materialVisibility).
 std::map<std::string, std::string> keptMaterialVisibility(const Scene& scene);
+// Hash of the materials' diffuse and emission factors and textures (names, colours, texels): what
+// the solve's ρ and E come from, and what relight changes (KeptFactors::materialsFingerprint).
+std::string keptMaterialsFingerprint(const Scene& scene);
 // The fingerprint of the lights a kept solve cast its first shot from (KeptFactors::
 // lightsFingerprint): relight and update compare the scene's lights now against it.
 std::string keptLightsFingerprint(const std::vector<Light>& lights);
 
 // factors.bin: the line "radiosity kept factors 2", a u64 (little-endian) byte count and that
 // many bytes of JSON (scene, fingerprint, elements, lights, options, element_edge, light_input,
-// lights_fingerprint, material_visibility),
+// lights_fingerprint, material_visibility, materials_fingerprint),
 // then little-endian arrays: area (f64 × n); per light, E_d (f64 × 3n); per element its row: u32
 // count c, u8 tinted, f64 escaped, i32 targets[c], f32 values[c], and f32 × 3c tinted values when
 // tinted; then the mesh: corners (f64 × 9n), material (i32 × n), patch (i32 × n), ray multiplier

@@ -57,6 +57,7 @@ std::shared_ptr<KeptFactors> keepLightsApart(Solution& solution, const RayCaster
   rayMultipliers = sourceRayMultipliers(solution.problem.area, sources);
   kept->lightInput = options.lights;
   kept->lightsFingerprint = keptLightsFingerprint(scene.lights);
+  kept->materialsFingerprint = keptMaterialsFingerprint(scene);
   kept->materialVisibility = keptMaterialVisibility(scene);
   kept->rayMultiplier = rayMultipliers;
   for (int e = 0; e < mesh.elementCount(); ++e) {

@@ -147,6 +147,27 @@ bool ElementExposure::buriedAtBarycentric(int e, double w1, double w2) const {
   return buried(e, r * r, r > 0 ? w2 / r : 0.0);
 }
 
+bool ElementExposure::buriedAtPoint(const PatchMesh& mesh, int e, const Eigen::Vector3d& p) const {
+  if (buried_.empty() || buried_[e] == 0) return false;
+  if (buried_[e] == ~uint64_t(0)) return true;  // fully buried: anywhere on it
+  // Barycentrics of p's projection onto the triangle's plane (a hit lies on it up to rounding),
+  // clamped onto the triangle: a hit on an edge may round a little outside.
+  const auto c = mesh.corners(e);
+  const Eigen::Vector3d e1 = c[1] - c[0], e2 = c[2] - c[0], v = p - c[0];
+  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2);
+  const double v1 = v.dot(e1), v2 = v.dot(e2);
+  const double det = d11 * d22 - d12 * d12;
+  if (!(det > 0)) return false;  // degenerate: no cells to speak of
+  double w1 = std::max(0.0, (d22 * v1 - d12 * v2) / det);
+  double w2 = std::max(0.0, (d11 * v2 - d12 * v1) / det);
+  if (w1 + w2 > 1) {
+    const double sum = w1 + w2;
+    w1 /= sum;
+    w2 /= sum;
+  }
+  return buriedAtBarycentric(e, w1, w2);
+}
+
 Eigen::Vector2d ElementExposure::exposedPoint(int e) const {
   const uint64_t cells = buriedCells(e);
   int cell = 0;

@@ -52,6 +52,9 @@ class ElementExposure {
   double exposedFraction(int e) const;
   bool buried(int e, double s, double t) const;
   bool buriedAtBarycentric(int e, double w1, double w2) const;
+  // Whether point p of element e's plane (a ray's hit on it) lies in one of its buried cells: no
+  // light reaches it there (a ray slipping through the crack where a box meets the floor).
+  bool buriedAtPoint(const PatchMesh& mesh, int e, const Eigen::Vector3d& p) const;
   // Barycentrics (w1, w2) of the centre of an exposed cell of e (the first in cell order).
   Eigen::Vector2d exposedPoint(int e) const;
 

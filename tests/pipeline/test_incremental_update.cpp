@@ -98,6 +98,16 @@ class IncrementalUpdate : public ::testing::Test {
     std::error_code ec;
     fs::remove_all(dir_, ec);
   }
+  // What elements.csv keeps of a solve, as `update` reads it back: B, E_d and the buried cells.
+  static PreviousSolution previousOf(const SolveResult& solve) {
+    PreviousSolution previous;
+    previous.radiosity = solve.solution.radiosity;
+    previous.directIrradiance = solve.solution.directIrradiance;
+    if (solve.solution.exposure)
+      previous.buriedCells =
+          solve.solution.exposure->allBuriedCells(solve.solution.mesh->elementCount());
+    return previous;
+  }
   // The user's edit: a kept solve of the scene `writeBefore` writes, the scene rewritten by
   // `writeAfter` and brought up to date by update, and a fresh solve of the same edited scene.
   struct Edited {
@@ -115,10 +125,8 @@ class IncrementalUpdate : public ::testing::Test {
     writeAfter(fresh);
     // The buried cells as elements.csv keeps them: the update keeps those the edit cannot change.
     if (!before.solution.exposure) throw std::runtime_error("the solve kept no exposure");
-    const std::vector<uint64_t> buried =
-        before.solution.exposure->allBuriedCells(before.solution.mesh->elementCount());
-    SolveResult updated = updateKeptSolve(*before.kept, "kept", before.solution.radiosity,
-                                          optionsFor(scene), &buried);
+    SolveResult updated =
+        updateKeptSolve(*before.kept, "kept", previousOf(before), optionsFor(scene));
     SolveResult reference = runSolve(optionsFor(fresh));
     // Kept or probed again, every element's buried cells are the fresh solve's.
     const int n = updated.solution.mesh->elementCount();
@@ -354,7 +362,7 @@ TEST_F(IncrementalUpdate, UnchangedSceneReusesEveryRowAndKeepsItsSolution) {
   writeCornell(scene, 0);
   const SolveResult before = runSolve(options(scene));
   const SolveResult updated =
-      updateKeptSolve(*before.kept, "kept", before.solution.radiosity, options(scene));
+      updateKeptSolve(*before.kept, "kept", previousOf(before), options(scene));
   EXPECT_EQ(updated.report.update.rowsReused, updated.solution.mesh->elementCount());
   EXPECT_EQ(updated.report.rowsComputed, 0);
   EXPECT_EQ(updated.report.update.moved, 0);
@@ -367,22 +375,93 @@ TEST_F(IncrementalUpdate, UnchangedSceneReusesEveryRowAndKeepsItsSolution) {
       ASSERT_NEAR(updated.solution.radiosity[e][c], before.solution.radiosity[e][c], 1e-7 * scale);
 }
 
+// An update that finds no edit gives the kept solution back bit for bit, whichever solver made it:
+// a progressive solve's rows are used the other way round from a Gauss–Seidel one's, so solving
+// again from it would move every element by the two estimates' difference.
+TEST_F(IncrementalUpdate, UnchangedSceneGivesAProgressiveSolveBackBitForBit) {
+  const fs::path scene = dir_ / "scene";
+  writeCornell(scene, 0);
+  SolveOptions progressive = options(scene);
+  progressive.solver = SolverKind::Progressive;
+  progressive.tolerance = 1e-3;
+  const SolveResult before = runSolve(progressive);
+  ASSERT_TRUE(before.kept);
+  const SolveResult updated =
+      updateKeptSolve(*before.kept, "kept", previousOf(before), options(scene));
+  ASSERT_EQ(updated.solution.radiosity.size(), before.solution.radiosity.size());
+  ASSERT_EQ(updated.solution.directIrradiance.size(), before.solution.directIrradiance.size());
+  for (size_t e = 0; e < before.solution.radiosity.size(); ++e)
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_EQ(updated.solution.radiosity[e][c], before.solution.radiosity[e][c]) << e;
+      ASSERT_EQ(updated.solution.directIrradiance[e][c], before.solution.directIrradiance[e][c])
+          << e;
+    }
+  EXPECT_EQ(updated.report.iterations, 0);
+}
+
+// A colour changed with no geometry moved is no edit of the rows, but it is of the solution: the
+// update solves again and gives the fresh solve's answer.
+TEST_F(IncrementalUpdate, ChangedColourIsSolvedAgainThoughNoRowChanged) {
+  const fs::path scene = dir_ / "scene", fresh = dir_ / "fresh";
+  writeCornell(scene, 0);
+  const SolveResult before = runSolve(options(scene));
+  ASSERT_TRUE(before.kept);
+  for (const fs::path& d : {scene, fresh}) {
+    if (d == fresh) writeCornell(fresh, 0);
+    std::ifstream in(d / "cornell_box.mtl");
+    std::stringstream text;
+    text << in.rdbuf();
+    in.close();
+    std::string mtl = text.str();
+    // Every diffuse colour halved: the light reflected changes everywhere.
+    std::string out;
+    std::istringstream lines(mtl);
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("Kd ", 0) == 0) {
+        std::istringstream kd(line.substr(3));
+        double r, g, b;
+        kd >> r >> g >> b;
+        std::ostringstream halved;
+        halved.precision(17);
+        halved << "Kd " << r / 2 << " " << g / 2 << " " << b / 2;
+        line = halved.str();
+      }
+      out += line + "\n";
+    }
+    std::ofstream(d / "cornell_box.mtl") << out;
+  }
+  const SolveResult updated =
+      updateKeptSolve(*before.kept, "kept", previousOf(before), options(scene));
+  const SolveResult reference = runSolve(options(fresh));
+  EXPECT_GT(updated.report.iterations, 0);
+  const double scale = peak(reference.solution.radiosity);
+  double largestChange = 0;
+  for (size_t e = 0; e < updated.solution.radiosity.size(); ++e)
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_NEAR(updated.solution.radiosity[e][c], reference.solution.radiosity[e][c],
+                  1e-7 * scale);
+      largestChange = std::max(largestChange, std::abs(updated.solution.radiosity[e][c] -
+                                                       before.solution.radiosity[e][c]));
+    }
+  EXPECT_GT(largestChange, 1e-3 * scale);  // the halved colours did change the solution
+}
+
 TEST_F(IncrementalUpdate, RefusesWhatItCannotHonour) {
   const fs::path scene = dir_ / "scene";
   writeCornell(scene, 0);
   const SolveResult before = runSolve(options(scene));
-  const std::vector<Rgb> wrongSize(before.solution.radiosity.size() + 1);
+  PreviousSolution wrongSize;
+  wrongSize.radiosity.resize(before.solution.radiosity.size() + 1);
   EXPECT_THROW(updateKeptSolve(*before.kept, "kept", wrongSize, options(scene)), InputError);
   SolveOptions progressive = options(scene);
   progressive.solver = SolverKind::Progressive;
-  EXPECT_THROW(updateKeptSolve(*before.kept, "kept", before.solution.radiosity, progressive),
-               InputError);
+  EXPECT_THROW(updateKeptSolve(*before.kept, "kept", previousOf(before), progressive), InputError);
   // A lamp added: the lights are not what update follows.
   std::ofstream(scene / "cornell_box.lights.json")
       << R"({"lights": [{"type": "point", "position": [0.45, 0.45, 0.1], "intensity": [1, 1, 1]},
                         {"type": "point", "position": [0.2, 0.45, 0.1], "intensity": [1, 1, 1]}]})";
   try {
-    updateKeptSolve(*before.kept, "kept", before.solution.radiosity, options(scene));
+    updateKeptSolve(*before.kept, "kept", previousOf(before), options(scene));
     FAIL() << "a changed light count must be refused";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("lights"), std::string::npos) << e.what();
