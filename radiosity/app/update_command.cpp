@@ -26,8 +26,8 @@ namespace {
 
 struct UpdateOptions {
   std::string dir;
-  std::string outputDir;  // default: dir
-  std::string solverName = "gauss-seidel";
+  std::string outputDir;   // default: dir
+  std::string solverName;  // empty: the kept solve's
   std::optional<double> tolerance;
   std::optional<int> maxIterations;
   int threads = 0;
@@ -52,7 +52,10 @@ void runUpdate(const UpdateOptions& o) {
   std::future<ElementsCsv> readingPrevious =
       std::async(std::launch::async, [&csvPath] { return readElementsCsv(csvPath); });
   SolveOptions solver = header.options;
-  solver.solver = parseSolverKind(o.solverName);
+  // By default the kept solve's solver, whose answer a fresh solve of the edited scene gives.
+  solver.solver = !o.solverName.empty()                           ? parseSolverKind(o.solverName)
+                  : continuesFromASolution(header.options.solver) ? header.options.solver
+                                                                  : SolverKind::GaussSeidel;
   if (o.tolerance) solver.tolerance = *o.tolerance;
   if (o.maxIterations) solver.maxIterations = *o.maxIterations;
   solver.threads = o.threads;
@@ -102,11 +105,11 @@ void registerUpdateCommand(CLI::App& app, CommandAction& run) {
   update->add_option("--out", o->outputDir, "Write the outputs here instead of into DIR");
   update
       ->add_option("--solver", o->solverName,
-                   "gauss-seidel | jacobi: a gathering solver, which starts from the previous "
-                   "solution")
-      ->default_val(o->solverName)
-      ->check(CLI::IsMember(
-          {solverKindName(SolverKind::GaussSeidel), solverKindName(SolverKind::Jacobi)}));
+                   "progressive | gauss-seidel | jacobi, which start from the previous solution "
+                   "(default: the kept solve's, or gauss-seidel)")
+      ->check(CLI::IsMember({solverKindName(SolverKind::Progressive),
+                             solverKindName(SolverKind::GaussSeidel),
+                             solverKindName(SolverKind::Jacobi)}));
   update->add_option("--tolerance", o->tolerance, "Relative tolerance (default: the kept solve's)");
   update->add_option("--max-iterations", o->maxIterations, "Iteration budget (0: the default)");
   addThreadsOption(*update, o->threads);

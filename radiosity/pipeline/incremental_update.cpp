@@ -26,6 +26,7 @@
 #include "radiosity/pipeline/solve_stages.h"
 #include "radiosity/scene/scene_loader.h"
 #include "radiosity/solvers/gathering_solvers.h"
+#include "radiosity/solvers/progressive_solver.h"
 #include "radiosity/solvers/solver_factory.h"
 #include "radiosity/visibility/triangle_set_caster.h"
 
@@ -373,8 +374,8 @@ void keepPreviousSolution(const KeptFactors& kept, const PreviousSolution& previ
   report.skip("solving again", "the update found no edit: the kept solution stands");
 }
 
-// Gauss–Seidel or Jacobi from the previous solution (new elements from their emission):
-// unchanged where the edit changed nothing.
+// Progressive shooting, Gauss–Seidel or Jacobi from the previous solution (new elements from their
+// emission): unchanged where the edit changed nothing.
 void solveFromPrevious(const std::vector<Rgb>& previous, const std::vector<int>& match,
                        const SolveOptions& options, KeptFactors& next,
                        const IterationLimits& limits, Solution& solution, SolveReport& report) {
@@ -387,14 +388,23 @@ void solveFromPrevious(const std::vector<Rgb>& previous, const std::vector<int>&
   const std::unique_ptr<Solver> solver = makeSolver(options.solver, solution.problem, keptRows,
                                                     [&] { return next.rows.lendMatrix(); });
   auto* gathering = dynamic_cast<GatheringSolver*>(solver.get());
-  RAD_CHECK(gathering != nullptr);
-  gathering->startFrom(std::move(guess));
+  auto* shooting = dynamic_cast<ProgressiveSolver*>(solver.get());
+  RAD_CHECK(gathering != nullptr || shooting != nullptr);
+  if (shooting)
+    shooting->startFrom(guess);
+  else
+    gathering->startFrom(std::move(guess));
   solveToLimits(*solver, limits, false, keptLightsIrradiance(next), solution,
-                report);  // gathering: no point values
-  next.rows.returnMatrix(gathering->releaseMatrix());
+                report);  // hemisphere rows: no point values
+  if (gathering) next.rows.returnMatrix(gathering->releaseMatrix());
 }
 
 }  // namespace
+
+bool continuesFromASolution(SolverKind kind) {
+  return kind == SolverKind::Progressive || kind == SolverKind::GaussSeidel ||
+         kind == SolverKind::Jacobi;
+}
 
 SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
                             const PreviousSolution& previous, const SolveOptions& solverOptions) {
@@ -405,10 +415,11 @@ UpdateStart startUpdate(const KeptFactors& header, const std::string& keptPath,
                         const SolveOptions& solverOptions) {
   UpdateStart started;
   started.start = Clock::now();
-  if (solverOptions.solver != SolverKind::GaussSeidel && solverOptions.solver != SolverKind::Jacobi)
+  if (!continuesFromASolution(solverOptions.solver))
     throw InputError(
-        "update continues from the previous solution, which only the gathering "
-        "solvers can: --solver gauss-seidel (the default) or jacobi");
+        "update continues from the previous solution, which --solver progressive, gauss-seidel "
+        "and jacobi can (" +
+        solverKindName(solverOptions.solver) + " cannot)");
   // The kept solve's mesh and ray options, with its element size fixed: an added object must not
   // change the size the scene's default would pick, or no element would stay put.
   SolveOptions& options = started.options;

@@ -26,14 +26,16 @@ namespace rad {
 // its shadow rays to it can meet the region's bounds (edit_reach.h); the others' is cast again.
 // An element that stayed put keeps its buried cells (`previous.buriedCells`, as the previous
 // elements.csv holds them) where none of its probe rays can meet the region's bounds; the others
-// are probed again, and all of them without them. The solve is a
-// gathering solver's (Gauss–Seidel by default; Jacobi), starting from the previous solution
+// are probed again, and all of them without them. The solve (`solverOptions.solver`: the kept
+// solve's own by default, so that the update converges to what a fresh solve of the edited scene
+// gives; progressive, Gauss–Seidel or Jacobi) starts from the previous solution
 // (`previous.radiosity`; new elements start from their emission). Returns the solution
 // with its kept factors, to be written back for the next update or relight; what the edit changed
 // and what was reused are in the report (SolveReport::update).
 //
 // InputError naming `keptPath`: a scene with mirrors or glass (their rows continue past the first
-// hit), a progressive or Southwell solver, `previous` not one value per kept element.
+// hit), a solver that cannot start from a solution (Southwell, hierarchical), `previous` not one
+// value per kept element.
 //
 // An update that finds nothing changed (no element moved, added or removed, every row and every
 // light's E_d kept, the materials as solved) returns the previous solution as it is, B and E_d,
@@ -44,6 +46,9 @@ struct PreviousSolution {
       directIrradiance;  // E_d per kept element; empty in a file without the Ed columns
   std::vector<uint64_t> buriedCells;  // per kept element; empty in a file without them
 };
+// The solvers that can start from a previous solution: progressive shooting (its unshot power
+// what the solution owes), Gauss–Seidel and Jacobi.
+bool continuesFromASolution(SolverKind kind);
 SolveResult updateKeptSolve(const KeptFactors& kept, const std::string& keptPath,
                             const PreviousSolution& previous, const SolveOptions& solverOptions);
 

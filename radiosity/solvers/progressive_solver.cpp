@@ -91,6 +91,30 @@ std::vector<Rgb> ProgressiveSolver::irradianceFrom(const std::vector<Rgb>& emiss
   return irradiance;
 }
 
+void ProgressiveSolver::startFrom(const std::vector<Rgb>& guess) {
+  RAD_CHECK_EQ(guess.size(), solution_.size());
+  RAD_CHECK_EQ(shots_.shooterCount(), problem_.size());  // element rows: shooter i is element i
+  const int n = problem_.size();
+  std::vector<Rgb> landed(n);  // power landing on each element from every shooter's B (W)
+  for (int i = 0; i < n; ++i) {
+    if (guess[i].isZero()) continue;
+    const Rgb power = guess[i] * shots_.shooterArea(i);
+    const FormFactorRow& row = shots_.powerFractions(i);
+    for (size_t k = 0; k < row.targets.size(); ++k) landed[row.targets[k]] += power * row.factor(k);
+  }
+  // Each element has shot its guess B A, and holds what that landed on it: B' = E + ρ·landed / A.
+  // What it holds and has not shot, (B' − B) A, is its unshot power.
+  for (int j = 0; j < n; ++j) {
+    const Rgb reflected = problem_.reflectance[j] * landed[j];
+    solution_[j] = problem_.emission[j] + reflected / problem_.area[j];
+    unshot_[j] = (solution_[j] - guess[j]) * problem_.area[j];
+    shot_[j] = guess[j];
+    received_[j] = reflected;
+    pointSolution_[j].fill(solution_[j]);
+  }
+  updateUnshotTotals();
+}
+
 std::vector<Rgb> ProgressiveSolver::withAmbient() const {
   CompensatedSum areaSum;
   Rgb unshotSum, rhoSum;

@@ -35,6 +35,13 @@ class ProgressiveSolver : public RefinableSolver {
   std::string progressMeasure() const override { return "unshot power / emitted power"; }
   // Each shooter's power Σ A E over its elements, spread by its row (computed if not yet shot).
   std::vector<Rgb> irradianceFrom(const std::vector<Rgb>& emission) override;
+  // Continues from `guess` (B per element; `update` after an edit, from the solution before it)
+  // instead of from the emission alone: every element has shot its guess B A, and holds what
+  // that lands on it, B' = E + ρ Σ_i B_i A_i F_ij / A_j; what it holds and has not shot,
+  // (B' − B) A, is its unshot power (negative where the guess is too bright). Shooting it
+  // converges to the same solution as from the start, so a guess that is already that solution
+  // leaves almost nothing to shoot. Reads every row: shooters must be the elements (RAD_CHECK).
+  void startFrom(const std::vector<Rgb>& guess);
 
   // B_i + rho_i · ambient, with ambient = R · (area-weighted mean unshot radiosity) and
   // R = 1 / (1 − area-weighted mean rho), per channel: an image that is roughly right from the

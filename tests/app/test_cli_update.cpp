@@ -130,8 +130,9 @@ TEST(CliUpdate, BadInputLeavesTheOutputsAsTheyWere) {
   auto r = runRadiosity("update " + (root / "scene").string());
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.stderrText.find("--keep-factors"), std::string::npos) << r.stderrText;
-  // A shooting solver cannot start from the previous solution.
-  r = runRadiosity("update " + kept.string() + " --solver progressive");
+  // Southwell (shooting along the gathering matrix's columns) cannot start from the previous
+  // solution.
+  r = runRadiosity("update " + kept.string() + " --solver southwell");
   EXPECT_EQ(r.exitCode, 2) << r.stderrText;  // not one of the option's choices: usage
   EXPECT_NE(r.stderrText.find("--solver"), std::string::npos) << r.stderrText;
   // An elements.csv of another solve (one element): named, and left as it was.
