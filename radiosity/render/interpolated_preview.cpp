@@ -10,8 +10,8 @@ namespace rad {
 InterpolatedPreview::InterpolatedPreview(const RenderScene& scene,
                                          const std::vector<Rgb>& radiosity)
     : scene_(scene),
-      interpolation_(scene.mesh(),
-                     exposedAreas(scene.mesh(), ElementExposure(scene.mesh(), scene.caster()))) {
+      exposure_(scene.mesh(), scene.caster()),
+      interpolation_(scene.mesh(), exposedAreas(scene.mesh(), exposure_)) {
   ElementSolution solution(scene, radiosity);
   vertexRadiance_ = interpolation_.interpolate(asVectors(solution.radiance));
   if (!scene.scene().textures.empty()) {
@@ -27,6 +27,8 @@ Rgb InterpolatedPreview::radiance(const Eigen::Vector3d& origin, const Eigen::Ve
                                   Sampler& sampler, RayCounts& counts) const {
   const DiffuseEyeHit eye = traceToDiffuse(scene_, origin, direction, sampler, counts);
   if (!eye.reached) return eye.radiance;
+  if (exposure_.buriedAtBarycentric(eye.hit.element, eye.hit.u, eye.hit.v))
+    return eye.weight * emitted_[eye.hit.element];
   return eye.weight * interpolatedRadiance(eye.hit);
 }
 

@@ -6,14 +6,16 @@
 
 #include "meshing/vertex_interpolation.h"
 #include "radiosity/render/integrator.h"
+#include "radiosity/visibility/element_exposure.h"
 
 namespace rad {
 
 // The eye pass that reads a radiosity solution without casting rays at the diffuse hit
 // (`--gather 0`): the interpolated B/π at the first diffuse hit, from the vertex values (the
-// elements weighed by their exposed areas). Mirrors and glass continue the ray (DiffuseEyeHit), so
-// they show the radiosity world, emitters included. Linear in B: the bounce terms' previews sum
-// to the solution's.
+// elements weighed by their exposed areas); at a hit in a buried cell of its element, which no
+// light reaches, the emission alone (the ceiling above a panel hung just under it). Mirrors and
+// glass continue the ray (DiffuseEyeHit), so they show the radiosity world, emitters included.
+// Linear in B: the bounce terms' previews sum to the solution's.
 class InterpolatedPreview : public SamplerIntegrator {
  public:
   // `radiosity`: B per element (W/m²); emission E = π·Ke comes from the materials.
@@ -29,6 +31,7 @@ class InterpolatedPreview : public SamplerIntegrator {
   Rgb interpolatedRadiance(const SurfaceHit& hit) const;  // B/π at the hit, from vertex values
 
   const RenderScene& scene_;
+  ElementExposure exposure_;
   VertexInterpolation interpolation_;
   std::vector<Rgb> emitted_;                     // Le per element (its texture's average)
   std::vector<Eigen::Vector3d> vertexRadiance_;  // B/π per output vertex
