@@ -211,8 +211,12 @@ void writeMeshesAndPngs(const Solution& solution, const BakeResult& baked, const
   const int pages = baked.layout.pages;
   std::vector<std::string> materialNames;
   for (const Material& m : solution.scene.materials) materialNames.push_back(m.name);
-  const BakedMesh bakedMesh = makeBakedMesh(mesh, baked.interpolation, baked.vertexRadiance,
-                                            o.noLightmap ? nullptr : &baked.layout, materialNames);
+  std::vector<char> backSidePatches;  // one patch per scene polygon
+  for (const ScenePolygon& polygon : solution.scene.polygons)
+    backSidePatches.push_back(polygon.backSideOf >= 0);
+  const BakedMesh bakedMesh =
+      makeBakedMesh(mesh, baked.interpolation, baked.vertexRadiance,
+                    o.noLightmap ? nullptr : &baked.layout, materialNames, backSidePatches);
   const BakedLook look = bakedLook(solution, baked, bakedMesh, !o.noLightmap);
   if (!o.noLightmap) report.baseColourImages = look.images.size();
   writeVertexColorsPly(files.open("vertex_colors.ply", true), baked.interpolation, mesh,

@@ -10,8 +10,12 @@ namespace rad {
 
 BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interpolation,
                         const std::vector<Rgb>& vertexRadiance, const LightmapLayout* layout,
-                        const std::vector<std::string>& materialNames) {
+                        const std::vector<std::string>& materialNames,
+                        const std::vector<char>& backSidePatches) {
   RAD_CHECK_EQ(vertexRadiance.size(), interpolation.vertexCount());  // one per output vertex
+  RAD_CHECK(backSidePatches.empty() ||
+            backSidePatches.size() == static_cast<size_t>(mesh.patchCount()));
+  const double lift = kBackSideLift * mesh.boundsDiagonal();
   BakedMesh out;
   out.materialNames = materialNames;
   // (interpolated vertex, chart, lightmap UV, texture UV) → output vertex. Within a generated
@@ -28,6 +32,7 @@ BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interp
     const Eigen::Vector2d none = Eigen::Vector2d::Zero();
     const std::array<Eigen::Vector2d, 3> textureUvs =
         mesh.hasUvs(e) ? mesh.cornerUvs(e) : std::array<Eigen::Vector2d, 3>{none, none, none};
+    const bool backSide = !backSidePatches.empty() && backSidePatches[mesh.patch(e)];
     std::array<int, 3> tri;
     for (int k = 0; k < 3; ++k) {
       const int v = interpolation.triangle(e)[k];
@@ -38,7 +43,11 @@ BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interp
           index.emplace(std::make_tuple(v, chart, uv.x(), uv.y(), textureUv.x(), textureUv.y()),
                         static_cast<int>(out.positions.size()));
       if (inserted) {
-        out.positions.push_back(interpolation.position(v));
+        // A back copy's vertices are its own (VertexInterpolation splits them off the front's by
+        // their opposite normals), so moving them moves no front triangle.
+        out.positions.push_back(
+            backSide ? Eigen::Vector3d(interpolation.position(v) + lift * interpolation.normal(v))
+                     : interpolation.position(v));
         out.normals.push_back(interpolation.normal(v));
         out.radiance.push_back(vertexRadiance[v]);
         out.sourceVertex.push_back(v);

@@ -30,11 +30,23 @@ struct BakedMesh {
   std::vector<std::string> materialNames;
 };
 
+// How far the back copies of two-sided surfaces go out behind their front sides, as a share of
+// the mesh's bounds diagonal (1.5 mm in a 15 m scene): far beyond float rounding, far below a
+// texel.
+inline constexpr double kBackSideLift = 1e-4;
+
 // `layout` may be null (vertex colours only). `vertexRadiance` has one value per output vertex
 // of `interpolation`; `materialNames` one name per material index used by the mesh. The scene's
 // texture UVs come along when the mesh has them (PatchMesh::hasUvs).
+// `backSidePatches` (empty, or one per patch): the patches that are the back copies of two-sided
+// surfaces (ScenePolygon::backSideOf). Their vertices go out moved along their own normal, away
+// from the front side, by kBackSideLift of the bounds diagonal: a renderer that does not cull
+// back faces (Cycles, Eevee, most glTF viewers) would otherwise show whichever of two coincident
+// copies a ray meets first, and so the wrong side's lightmap over half the surface. Moved apart,
+// a ray from either side meets that side's own copy first.
 BakedMesh makeBakedMesh(const PatchMesh& mesh, const VertexInterpolation& interpolation,
                         const std::vector<Rgb>& vertexRadiance, const LightmapLayout* layout,
-                        const std::vector<std::string>& materialNames);
+                        const std::vector<std::string>& materialNames,
+                        const std::vector<char>& backSidePatches = {});
 
 }  // namespace rad

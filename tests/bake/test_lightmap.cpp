@@ -169,6 +169,34 @@ TEST(LightmapBakedMesh, WithoutTextureUvsAVertexSplitsOnlyBetweenCharts) {
   EXPECT_EQ(baked.positions.size(), vertexCharts.size());
 }
 
+// A two-sided surface is two coincident copies facing apart. Exported as they are, a renderer that
+// does not cull back faces (Cycles) shows whichever copy a ray meets first: the wrong side's light
+// over about half the surface (the shared staircase baked --two-sided, in Blender). The back copy
+// goes out moved behind the front one along its own normal, so each side's ray meets its own copy.
+TEST(LightmapBakedMesh, TwoSidedBackCopiesLieBehindTheirFrontSides) {
+  const std::vector<Eigen::Vector3d> square = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+  const PatchMesh mesh(square, {PatchPolygon({0, 1, 2, 3}, 0), PatchPolygon({0, 3, 2, 1}, 0)});
+  const VertexInterpolation interpolation(mesh);
+  const std::vector<Rgb> radiance(interpolation.vertexCount());
+  const BakedMesh baked = makeBakedMesh(mesh, interpolation, radiance, nullptr, {"grey"}, {0, 1});
+  const double lift = kBackSideLift * mesh.boundsDiagonal();
+  int front = 0, back = 0;
+  for (int e = 0; e < mesh.elementCount(); ++e) {
+    const bool isBack = mesh.patch(e) == 1;
+    ASSERT_EQ(mesh.normal(e).z(), isBack ? -1.0 : 1.0);
+    for (int v : baked.triangles[e]) {
+      // Front: exactly in place; back: lifted along its normal (-z), away from the front side.
+      EXPECT_DOUBLE_EQ(baked.positions[v].z(), isBack ? -lift : 0.0) << "element " << e;
+      (isBack ? back : front) += 1;
+    }
+  }
+  EXPECT_GT(front, 0);
+  EXPECT_GT(back, 0);
+  // One-sided surfaces stay where they are.
+  const BakedMesh plain = makeBakedMesh(mesh, interpolation, radiance, nullptr, {"grey"});
+  for (const Eigen::Vector3d& p : plain.positions) EXPECT_EQ(p.z(), 0.0);
+}
+
 TEST(LightmapBake, OneThreadAndManyBakeTheSamePage) {
   const Baked many = bake(cornellMesh(), {0, 128, 2});  // coarse: texels shared by many elements
   // With an evaluator (as the bake's texture detail and per-texel gather use) returning the
