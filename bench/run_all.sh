@@ -7,6 +7,7 @@
 #   3. cost growth with scene size, 1e3 … 1e5 elements           → bench/results/growth.*
 #   4. uniform against adaptive meshing (bench/mesh_error)       → bench/mesh_results/
 #   5. render error against time (bench/render_error_vs_time.py) → bench/render_results/
+#   6. leaks and dark contacts of default bakes (bench/leak_suite.py) → bench/results/leak_suite.csv
 #
 #   bash bench/run_all.sh [BUILD_DIR]     (default: build; configured here when it has no cache)
 #
@@ -65,5 +66,8 @@ mkdir -p bench/mesh_results
 
 stage "render error against time (bench/render_error_vs_time.py)"
 "$PY" bench/render_error_vs_time.py --build "$BUILD"
+
+stage "leaks and dark contacts (bench/leak_suite.py)"
+"$PY" bench/leak_suite.py
 
 stage "done"

@@ -38,8 +38,11 @@ if [[ " $* " == *" --format "* ]]; then packages+=(clang-format); fi
 # suite runs them, and under CI=true a skipped external check fails CI (scripts/run_tests.sh).
 if [[ " $* " == *" --references "* ]]; then packages+=(blender python3-numpy); fi
 # `scripts/setup.sh --bench`: matplotlib for the benchmark's PNG plots (bench/run_all.sh; issue 8)
-# and Blender (3.4), whose Cycles the side-by-side race renders with (bench/peer/race.py; issue 17).
-if [[ " $* " == *" --bench "* ]]; then packages+=(python3-matplotlib python3-numpy blender); fi
+# and Blender (3.4), whose Cycles the side-by-side race renders with (bench/peer/race.py; issue 17);
+# oiiotool, which reads the lightmaps' EXR texels for bench/leak_suite.py (issue 48).
+if [[ " $* " == *" --bench "* ]]; then
+  packages+=(python3-matplotlib python3-numpy blender openimageio-tools)
+fi
 
 # The Khronos glTF validator for the bake tests (npm, pinned by tools/gltf-validator/package-lock.json).
 install_gltf_validator() {
