@@ -65,6 +65,16 @@ inline void addGeometry(Fingerprint& f, const Scene& scene) {
   }
 }
 
+// The scene's textures: each one's size and texels.
+inline void addTextures(Fingerprint& f, const Scene& scene) {
+  f.add(scene.textures.size());
+  for (const Texture& t : scene.textures) {
+    f.add(t.width);
+    f.add(t.height);
+    for (float v : t.rgba) f.add(v);
+  }
+}
+
 // The lights: their kind, placement, shape and strength, an environment's texels included.
 inline void addLights(Fingerprint& f, const std::vector<Light>& lights) {
   f.add(lights.size());

@@ -460,12 +460,7 @@ std::string keptMaterialsFingerprint(const Scene& scene) {
     f.add(m.diffuseTexture);
     f.add(m.emissionTexture);
   }
-  f.add(scene.textures.size());
-  for (const Texture& t : scene.textures) {
-    f.add(t.width);
-    f.add(t.height);
-    for (float v : t.rgba) f.add(v);
-  }
+  addTextures(f, scene);
   return f.hex();
 }
 

@@ -119,12 +119,7 @@ std::string solutionFingerprint(const Scene& scene, const SolveOptions& o) {
     f.add(m.diffuseTexture);
     f.add(m.emissionTexture);
   }
-  f.add(scene.textures.size());
-  for (const Texture& t : scene.textures) {
-    f.add(t.width);
-    f.add(t.height);
-    for (float v : t.rgba) f.add(v);
-  }
+  addTextures(f, scene);
   addLights(f, scene.lights);
   f.add(static_cast<int>(o.solver));
   f.add(o.raysPerElement);
