@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -10,19 +9,27 @@
 namespace rad::fuzz {
 
 // The loaders read files by name, so each input is written to a private directory first
-// (one per process: libFuzzer's -jobs/-workers run several side by side).
+// (one per process: libFuzzer's -jobs/-workers run several side by side), removed when the
+// process exits. (An std::atexit handler registered while the path was being made ran after the
+// path's destructor, found it empty and removed nothing: 212 directories were left in /tmp.)
+struct FuzzTempDir {
+  std::filesystem::path path;
+  FuzzTempDir()
+      : path(std::filesystem::temp_directory_path() /
+             ("radiosity_fuzz_" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path);
+  }
+  ~FuzzTempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  FuzzTempDir(const FuzzTempDir&) = delete;
+  FuzzTempDir& operator=(const FuzzTempDir&) = delete;
+};
+
 inline const std::filesystem::path& tempDir() {
-  static const std::filesystem::path dir = [] {
-    std::filesystem::path d =
-        std::filesystem::temp_directory_path() / ("radiosity_fuzz_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    std::atexit([] {
-      std::error_code ec;
-      std::filesystem::remove_all(tempDir(), ec);
-    });
-    return d;
-  }();
-  return dir;
+  static const FuzzTempDir dir;
+  return dir.path;
 }
 
 inline std::string writeTemp(const std::string& name, const char* data, std::size_t size) {
